@@ -1,0 +1,43 @@
+# The two commands of the README: `make demo` and `make test` do everything on a fresh
+# Debian 12 machine (install what is missing, build, run).
+BUILD ?= build
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS ?=
+PYTHON ?= /usr/bin/python3
+
+.PHONY: all deps configure build demo test bench validate format tidy clean
+
+all: build
+
+deps:
+	scripts/install-deps
+
+$(BUILD)/build.ninja:
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+configure: deps $(BUILD)/build.ninja
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	scripts/demo
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600
+
+bench: build
+	$(BUILD)/curvsph_bench --benchmark_counters_tabular=true
+
+validate: build
+	$(BUILD)/curvsph validate all
+	$(PYTHON) scripts/validation_index.py
+
+format:
+	find src tests bench -name '*.hpp' -o -name '*.cpp' | xargs clang-format -i
+
+tidy: build
+	find src -name '*.cpp' | xargs clang-tidy -p $(BUILD) --quiet
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,81 @@
+#pragma once
+// Particles in structure-of-arrays. Every per-particle field lives here, so a single
+// permute() reorders all of them at once (no module sorts its own data) and the output
+// writers can visit every field by name.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "curvsph/core/types.hpp"
+
+namespace curvsph {
+
+template <int D>
+struct Particles {
+  // Kinematics.
+  std::vector<Vec<D>> x;   // position
+  std::vector<Vec<D>> v;   // velocity
+  std::vector<Vec<D>> a;   // acceleration (rate of v)
+  // Thermodynamics.
+  std::vector<Real> mass;
+  std::vector<Real> rho;    // density
+  std::vector<Real> drho;   // rate of rho (continuity path)
+  std::vector<Real> p;      // pressure
+  std::vector<Real> sigma;  // number density sum_j W_ij (Barker eq. 8)
+  // Identity.
+  std::vector<std::int32_t> phase;  // index into the case's fluids
+  std::vector<std::int64_t> id;     // stable id across permutations
+
+  std::size_t size() const { return x.size(); }
+
+  void resize(std::size_t n) {
+    x.resize(n, Vec<D>::Zero());
+    v.resize(n, Vec<D>::Zero());
+    a.resize(n, Vec<D>::Zero());
+    mass.resize(n, 0);
+    rho.resize(n, 0);
+    drho.resize(n, 0);
+    p.resize(n, 0);
+    sigma.resize(n, 0);
+    phase.resize(n, 0);
+    id.resize(n, 0);
+  }
+
+  // Visit every field: scalar(name, data) for Real arrays, vector(name, data) for Vec arrays,
+  // integer(name, data) for integer arrays. Adding a field means adding it here once.
+  template <class F>
+  void for_each_field(F&& f) {
+    f("position", x);
+    f("velocity", v);
+    f("acceleration", a);
+    f("mass", mass);
+    f("density", rho);
+    f("density_rate", drho);
+    f("pressure", p);
+    f("number_density", sigma);
+    f("phase", phase);
+    f("id", id);
+  }
+  template <class F>
+  void for_each_field(F&& f) const {
+    const_cast<Particles*>(this)->for_each_field([&](const char* name, const auto& data) {
+      f(name, data);
+    });
+  }
+
+  // Reorder every field: new[k] = old[order[k]].
+  void permute(const std::vector<std::size_t>& order) {
+    for_each_field([&](const char*, auto& data) { apply(data, order); });
+  }
+
+ private:
+  template <class T>
+  static void apply(std::vector<T>& data, const std::vector<std::size_t>& order) {
+    std::vector<T> tmp(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) tmp[k] = data[order[k]];
+    data.swap(tmp);
+  }
+};
+
+}  // namespace curvsph

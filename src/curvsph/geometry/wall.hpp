@@ -1,0 +1,126 @@
+#pragma once
+// The one question every boundary treatment asks of a wall (DESIGN.md §4):
+// for a point x near it, where is the closest wall point, which way is the fluid,
+// how far, and how curved is the wall there.
+//
+// Sign conventions (normative):
+//  - normal: unit, pointing INTO the fluid;
+//  - distance: signed, > 0 on the fluid side;
+//  - curvatures: k1 >= k2, > 0 where the wall is concave seen from the fluid
+//    (fluid inside a circle of radius R: k = 1/R; fluid outside a cylinder: k = -1/R).
+//    In 2-D only k1 is used and k2 = 0.
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "curvsph/core/types.hpp"
+
+namespace curvsph {
+
+template <int D>
+struct WallPoint {
+  VecD<D> foot = VecD<D>::Zero();
+  VecD<D> normal = VecD<D>::Zero();
+  double distance = 0.0;
+  double k1 = 0.0;
+  double k2 = 0.0;
+  // Principal directions (3-D only; unit tangents for k1 and k2).
+  VecD<D> dir1 = VecD<D>::Zero();
+  VecD<D> dir2 = VecD<D>::Zero();
+  // Surface parameters where the shape has them (u for curves, (u, v) for surfaces).
+  std::array<double, 2> param{0.0, 0.0};
+  int param_count = 0;
+  // Index of the answering wall inside a WallSet (-1 for a single wall query).
+  int wall = -1;
+  // Newton iterations spent (0 for closed forms); for benchmarks and diagnostics.
+  int iterations = 0;
+};
+
+// Optional seed for iterative projections (Barker §3.2: the nearest boundary particle's
+// stored parameter). Walls with closed forms ignore it.
+struct ParamSeed {
+  std::array<double, 2> param{0.0, 0.0};
+  bool valid = false;
+};
+
+// Rigid wall motion (DESIGN.md §3 `motion:`), evaluated at a foot point.
+template <int D>
+struct WallMotion {
+  enum class Kind { none, rotate, translate } kind = Kind::none;
+  double omega = 0.0;                          // rotate (2-D: about z; 3-D: about `axis`)
+  VecD<D> center = VecD<D>::Zero();            // rotate
+  VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);       // rotate, 3-D
+  VecD<D> velocity = VecD<D>::Zero();          // translate
+  VecD<D> velocity_at(const VecD<D>& x) const;
+};
+
+template <int D>
+class Wall {
+ public:
+  virtual ~Wall() = default;
+  // Closest point on the wall to x, with the sign conventions above. Never fails: iterative
+  // shapes fall back to a global search so the answer is the global minimum within tolerance.
+  virtual WallPoint<D> closest(const VecD<D>& x, const ParamSeed& seed = {}) const = 0;
+  // Short human-readable description for messages ("circle r=0.025").
+  virtual std::string describe() const = 0;
+  // Smallest radius of curvature anywhere on the wall (+inf for flat walls); used to refuse
+  // a kernel support too large for the wall (DESIGN.md §3 errors).
+  virtual double min_radius_of_curvature() const = 0;
+
+  WallMotion<D> motion;
+};
+
+template <int D>
+using WallPtr = std::shared_ptr<const Wall<D>>;
+
+// Several walls; the nearest (smallest |distance|) answers, and says which one it was.
+template <int D>
+class WallSet {
+ public:
+  void add(WallPtr<D> w) { walls_.push_back(std::move(w)); }
+  std::size_t size() const { return walls_.size(); }
+  bool empty() const { return walls_.empty(); }
+  const Wall<D>& operator[](std::size_t i) const { return *walls_[i]; }
+  const std::vector<WallPtr<D>>& walls() const { return walls_; }
+
+  WallPoint<D> closest(const VecD<D>& x) const {
+    WallPoint<D> best;
+    best.distance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < walls_.size(); ++i) {
+      WallPoint<D> p = walls_[i]->closest(x);
+      if (std::abs(p.distance) < std::abs(best.distance)) {
+        best = p;
+        best.wall = static_cast<int>(i);
+      }
+    }
+    return best;
+  }
+
+ private:
+  std::vector<WallPtr<D>> walls_;
+};
+
+template <int D>
+VecD<D> WallMotion<D>::velocity_at(const VecD<D>& x) const {
+  switch (kind) {
+    case Kind::translate:
+      return velocity;
+    case Kind::rotate: {
+      if constexpr (D == 2) {
+        const VecD<2> r = x - center;
+        return VecD<2>(-omega * r.y(), omega * r.x());
+      } else {
+        return omega * axis.normalized().cross(VecD<3>(x - center));
+      }
+    }
+    case Kind::none:
+    default:
+      return VecD<D>::Zero();
+  }
+}
+
+}  // namespace curvsph

@@ -1,0 +1,39 @@
+#pragma once
+// Analytic references of a case (`analysis: {name: {params}}` in the case file). An analysis
+// watches the run at output times and adds its figures to metrics.json at the end; its
+// reference is computed from the case's own values, so `--set` changes both. A flow that is
+// known analytically may also provide the initial state (`initial: {name: {params}}`).
+// A new analysis is one new file plus one line in registry.cpp.
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/physics/eos.hpp"
+
+namespace curvsph {
+
+template <int D>
+class Analysis {
+ public:
+  virtual ~Analysis() = default;
+  // Called at t = 0 and at every output time.
+  virtual void observe(double /*t*/, const Particles<D>& /*P*/) {}
+  // Adds the analysis' figures to metrics.
+  virtual void finish(double t, const Particles<D>& P, nlohmann::json& metrics) = 0;
+};
+
+template <int D>
+std::unique_ptr<Analysis<D>> make_analysis(const std::string& name, const YAML::Node& params,
+                                           const Case& c);
+
+// Sets velocity, pressure and density of every particle from a named initial flow field.
+template <int D>
+void apply_initial_field(const Case& c, const Eos& eos, const std::vector<Real>& rho0,
+                         Particles<D>& P);
+
+}  // namespace curvsph

@@ -1,0 +1,70 @@
+// The table of analyses and initial flow fields: one line per entry.
+#include "curvsph/analysis/analysis.hpp"
+#include "curvsph/analysis/taylor_green_analysis.hpp"
+#include "curvsph/core/error.hpp"
+
+namespace curvsph {
+namespace {
+
+template <int D>
+struct Entry {
+  const char* name;
+  std::unique_ptr<Analysis<D>> (*analysis)(const YAML::Node&, const Case&);
+  void (*initial)(const Case&, const YAML::Node&, const Eos&, const std::vector<Real>&,
+                  Particles<D>&);
+};
+
+const Entry<2> kEntries2[] = {
+    {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
+};
+const Entry<3> kEntries3[] = {
+    {"", nullptr, nullptr},
+};
+
+template <int D>
+auto& entries() {
+  if constexpr (D == 2)
+    return kEntries2;
+  else
+    return kEntries3;
+}
+
+template <int D>
+std::string names() {
+  std::string s;
+  for (const auto& e : entries<D>())
+    if (*e.name) s += (s.empty() ? "" : ", ") + std::string(e.name);
+  return s.empty() ? "none" : s;
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Analysis<D>> make_analysis(const std::string& name, const YAML::Node& params,
+                                           const Case& c) {
+  for (const auto& e : entries<D>())
+    if (name == e.name && e.analysis) return e.analysis(params, c);
+  throw InputError(c.file_name(), "analysis." + name,
+                   "unknown analysis in " + std::to_string(D) + "-D (known: " + names<D>() + ")");
+}
+
+template <int D>
+void apply_initial_field(const Case& c, const Eos& eos, const std::vector<Real>& rho0,
+                         Particles<D>& P) {
+  for (const auto& e : entries<D>())
+    if (c.initial_field == e.name && e.initial) return e.initial(c, c.initial_params, eos, rho0, P);
+  throw InputError(c.file_name(), "initial." + c.initial_field,
+                   "unknown initial flow field in " + std::to_string(D) +
+                       "-D (known: " + names<D>() + ")");
+}
+
+template std::unique_ptr<Analysis<2>> make_analysis<2>(const std::string&, const YAML::Node&,
+                                                       const Case&);
+template std::unique_ptr<Analysis<3>> make_analysis<3>(const std::string&, const YAML::Node&,
+                                                       const Case&);
+template void apply_initial_field<2>(const Case&, const Eos&, const std::vector<Real>&,
+                                     Particles<2>&);
+template void apply_initial_field<3>(const Case&, const Eos&, const std::vector<Real>&,
+                                     Particles<3>&);
+
+}  // namespace curvsph

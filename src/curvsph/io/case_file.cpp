@@ -1,0 +1,387 @@
+#include "curvsph/io/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+#include "curvsph/core/error.hpp"
+#include "curvsph/io/case_overrides.hpp"
+
+namespace curvsph {
+namespace {
+
+// Reads typed values out of one YAML map, remembering the dotted key path for messages.
+class Keys {
+ public:
+  Keys(const YAML::Node& node, std::string file, std::string path)
+      : node_(node), file_(std::move(file)), path_(std::move(path)) {
+    if (node_ && !node_.IsMap() && !node_.IsNull())
+      fail(path_, "must be a mapping of keys (got " + kind(node_) + ")");
+  }
+
+  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+  bool has(const std::string& k) const { return node_ && node_.IsMap() && node_[k]; }
+  YAML::Node raw(const std::string& k) const { return has(k) ? node_[k] : YAML::Node(); }
+  Keys sub(const std::string& k) const { return Keys(raw(k), file_, key(k)); }
+  [[noreturn]] void fail(const std::string& k, const std::string& why) const {
+    throw InputError(file_, k, why);
+  }
+
+  void allow(std::initializer_list<const char*> names) const {
+    if (!node_ || !node_.IsMap()) return;
+    std::set<std::string> ok(names.begin(), names.end());
+    for (const auto& kv : node_) {
+      const auto name = kv.first.as<std::string>();
+      if (!ok.count(name)) {
+        std::string list;
+        for (const auto& n : ok) list += (list.empty() ? "" : ", ") + n;
+        fail(key(name), "unknown key (allowed here: " + list + ")");
+      }
+    }
+  }
+
+  double number(const std::string& k, std::optional<double> fallback = std::nullopt) const {
+    if (!has(k)) {
+      if (fallback) return *fallback;
+      fail(key(k), "missing (a number is required)");
+    }
+    return as_number(node_[k], key(k));
+  }
+  double positive(const std::string& k, std::optional<double> fallback = std::nullopt) const {
+    const double v = number(k, fallback);
+    if (!(v > 0)) fail(key(k), fmt::format("must be > 0 (got {})", v));
+    return v;
+  }
+  double non_negative(const std::string& k, std::optional<double> fallback = std::nullopt) const {
+    const double v = number(k, fallback);
+    if (!(v >= 0)) fail(key(k), fmt::format("must be >= 0 (got {})", v));
+    return v;
+  }
+  long integer(const std::string& k, std::optional<long> fallback = std::nullopt) const {
+    if (!has(k)) {
+      if (fallback) return *fallback;
+      fail(key(k), "missing (an integer is required)");
+    }
+    const double v = as_number(node_[k], key(k));
+    if (v != std::floor(v)) fail(key(k), fmt::format("must be an integer (got {})", v));
+    return static_cast<long>(v);
+  }
+  bool boolean(const std::string& k, bool fallback) const {
+    if (!has(k)) return fallback;
+    bool b = false;
+    if (!node_[k].IsScalar() || !YAML::convert<bool>::decode(node_[k], b))
+      fail(key(k), "must be true or false (got '" + scalar_text(node_[k]) + "')");
+    return b;
+  }
+  std::string text(const std::string& k, std::optional<std::string> fallback = std::nullopt) const {
+    if (!has(k)) {
+      if (fallback) return *fallback;
+      fail(key(k), "missing (a string is required)");
+    }
+    if (!node_[k].IsScalar()) fail(key(k), "must be a string (got " + kind(node_[k]) + ")");
+    return node_[k].as<std::string>();
+  }
+  std::string choice(const std::string& k, std::initializer_list<const char*> options,
+                     std::optional<std::string> fallback = std::nullopt) const {
+    const std::string v = text(k, fallback);
+    std::string list;
+    for (const char* o : options) {
+      if (v == o) return v;
+      list += (list.empty() ? "" : " | ") + std::string(o);
+    }
+    fail(key(k), "'" + v + "' is not one of: " + list);
+  }
+  // A list of exactly `dim` numbers into the first dim components of a Vec3d.
+  Vec3d vector(const std::string& k, int dim, std::optional<Vec3d> fallback = std::nullopt) const {
+    if (!has(k)) {
+      if (fallback) return *fallback;
+      fail(key(k), fmt::format("missing (a list of {} numbers is required)", dim));
+    }
+    const YAML::Node n = node_[k];
+    if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+      fail(key(k), fmt::format("must be a list of {} numbers (dimension {})", dim, dim));
+    Vec3d v = Vec3d::Zero();
+    for (int d = 0; d < dim; ++d) v[d] = as_number(n[d], key(k) + "." + std::to_string(d));
+    return v;
+  }
+  std::array<bool, 3> flags(const std::string& k, int dim) const {
+    std::array<bool, 3> out{false, false, false};
+    if (!has(k)) return out;
+    const YAML::Node n = node_[k];
+    if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+      fail(key(k), fmt::format("must be a list of {} booleans", dim));
+    for (int d = 0; d < dim; ++d) {
+      bool b = false;
+      if (!YAML::convert<bool>::decode(n[d], b))
+        fail(key(k) + "." + std::to_string(d), "must be true or false");
+      out[d] = b;
+    }
+    return out;
+  }
+  const YAML::Node& node() const { return node_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  static std::string kind(const YAML::Node& n) {
+    switch (n.Type()) {
+      case YAML::NodeType::Sequence:
+        return "a list";
+      case YAML::NodeType::Map:
+        return "a mapping";
+      case YAML::NodeType::Scalar:
+        return "'" + n.Scalar() + "'";
+      default:
+        return "nothing";
+    }
+  }
+  static std::string scalar_text(const YAML::Node& n) { return n.IsScalar() ? n.Scalar() : kind(n); }
+  double as_number(const YAML::Node& n, const std::string& k) const {
+    double v = 0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
+      fail(k, "must be a finite number (got " + kind(n) + ")");
+    return v;
+  }
+
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+};
+
+RegionSpec read_region(const Keys& k, int dim) {
+  if (!k.node() || !k.node().IsMap() || k.node().size() != 1)
+    k.fail(k.path(), "must hold exactly one region: box | disk | ball | annulus | inside_walls");
+  const std::string type = k.node().begin()->first.as<std::string>();
+  RegionSpec r;
+  const Keys s = k.sub(type);
+  if (type == "box") {
+    s.allow({"min", "max"});
+    r.kind = RegionSpec::Kind::box;
+    r.min = s.vector("min", dim);
+    r.max = s.vector("max", dim);
+    for (int d = 0; d < dim; ++d)
+      if (!(r.max[d] > r.min[d])) s.fail(s.key("max"), "must exceed min on every axis");
+  } else if (type == "disk" || type == "ball") {
+    if ((type == "disk") != (dim == 2))
+      k.fail(k.key(type), type == "disk" ? "a disk is 2-D; use ball in 3-D"
+                                         : "a ball is 3-D; use disk in 2-D");
+    s.allow({"center", "radius"});
+    r.kind = type == "disk" ? RegionSpec::Kind::disk : RegionSpec::Kind::ball;
+    r.center = s.vector("center", dim);
+    r.radius = s.positive("radius");
+  } else if (type == "annulus") {
+    s.allow({"center", "r_in", "r_out"});
+    r.kind = RegionSpec::Kind::annulus;
+    r.center = s.vector("center", dim);
+    r.r_in = s.non_negative("r_in");
+    r.r_out = s.positive("r_out");
+    if (!(r.r_out > r.r_in)) s.fail(s.key("r_out"), "must exceed r_in");
+  } else if (type == "inside_walls") {
+    bool b = false;
+    if (!YAML::convert<bool>::decode(k.node()["inside_walls"], b) || !b)
+      k.fail(k.key(type), "must be true");
+    r.kind = RegionSpec::Kind::inside_walls;
+  } else {
+    k.fail(k.key(type), "unknown region (box | disk | ball | annulus | inside_walls)");
+  }
+  return r;
+}
+
+}  // namespace
+
+Case read_case(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::BadFile&) {
+    throw InputError(path.string(), "", "cannot open the case file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path.string(), "",
+                     fmt::format("YAML syntax error at line {}, column {}: {}", e.mark.line + 1,
+                                 e.mark.column + 1, e.msg));
+  }
+  apply_overrides(root, overrides);
+  return read_case(root, path);
+}
+
+Case read_case(YAML::Node root, const std::filesystem::path& path) {
+  Case c;
+  c.file = path;
+  c.root = root;
+  const std::string file = path.string();
+  if (!root.IsMap()) throw InputError(file, "", "the case file must be a YAML mapping");
+  const Keys top(root, file, "");
+  top.allow({"name", "dimension", "resolution", "domain", "fluids", "eos", "density", "gravity",
+             "forcing", "walls", "boundary", "setup", "time", "output", "probes", "analysis",
+             "initial"});
+  c.name = top.text("name", path.stem().string());
+  const long dim = top.integer("dimension");
+  if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
+  c.dimension = static_cast<int>(dim);
+  const int D = c.dimension;
+
+  const Keys res = top.sub("resolution");
+  res.allow({"dx", "h_over_dx"});
+  c.dx = res.positive("dx");
+  c.h_over_dx = res.positive("h_over_dx", 1.3);
+  if (c.h_over_dx < 0.8 || c.h_over_dx > 4)
+    res.fail(res.key("h_over_dx"), "must lie in [0.8, 4] for the Wendland C2 kernel");
+
+  if (top.has("domain")) {
+    const Keys dom = top.sub("domain");
+    dom.allow({"min", "max", "periodic"});
+    c.has_domain = true;
+    c.domain_min = dom.vector("min", D);
+    c.domain_max = dom.vector("max", D);
+    c.periodic = dom.flags("periodic", D);
+    for (int d = 0; d < D; ++d) {
+      if (!(c.domain_max[d] > c.domain_min[d]))
+        dom.fail(dom.key("max"), "must exceed min on every axis");
+      const double cells = (c.domain_max[d] - c.domain_min[d]) / (2 * c.h());
+      if (c.periodic[d] && cells < 3)
+        dom.fail(dom.key("periodic"),
+                 fmt::format("periodic axis {} spans only {:.2f} kernel supports (2h = {}); at "
+                             "least 3 are needed",
+                             d, cells, 2 * c.h()));
+    }
+  }
+
+  const YAML::Node fluids = top.raw("fluids");
+  if (!fluids || !fluids.IsSequence() || fluids.size() == 0)
+    top.fail("fluids", "missing (a list with at least one fluid is required)");
+  for (std::size_t i = 0; i < fluids.size(); ++i) {
+    const Keys f(fluids[i], file, "fluids." + std::to_string(i));
+    f.allow({"name", "rho0", "viscosity", "region", "velocity"});
+    FluidSpec s;
+    s.name = f.text("name", "fluid" + std::to_string(i));
+    s.rho0 = f.positive("rho0");
+    s.viscosity = f.non_negative("viscosity", 0.0);
+    if (!f.has("region")) f.fail(f.key("region"), "missing (where the fluid starts)");
+    s.region = read_region(f.sub("region"), D);
+    s.velocity = f.vector("velocity", D, Vec3d::Zero());
+    c.fluids.push_back(s);
+  }
+
+  const Keys eos = top.sub("eos");
+  if (!top.has("eos")) top.fail("eos", "missing ({type: tait|linear, c0, p0})");
+  eos.allow({"type", "c0", "gamma", "p0"});
+  c.eos.type = eos.choice("type", {"tait", "linear"}, "tait") == "tait" ? EosSpec::Type::tait
+                                                                        : EosSpec::Type::linear;
+  c.eos.c0 = eos.positive("c0");
+  c.eos.gamma = eos.positive("gamma", 7.0);
+  c.eos.p0 = eos.number("p0", 0.0);
+
+  const Keys den = top.sub("density");
+  den.allow({"method", "delta_sph", "shifting"});
+  c.density.method = den.choice("method", {"summation", "continuity"}, "summation") == "summation"
+                         ? DensitySpec::Method::summation
+                         : DensitySpec::Method::continuity;
+  c.density.delta_sph = den.non_negative("delta_sph", 0.1);
+  c.shifting = den.non_negative("shifting", 0.0);
+  if (c.shifting > 1) den.fail(den.key("shifting"), "must be <= 1 (typical: 0.01-0.05)");
+  if (den.has("delta_sph") && c.density.method == DensitySpec::Method::summation)
+    den.fail(den.key("delta_sph"), "only applies to method: continuity");
+
+  c.gravity = top.vector("gravity", D, Vec3d::Zero());
+  if (top.has("forcing")) {
+    const Keys frc = top.sub("forcing");
+    frc.allow({"drive"});
+    if (frc.has("drive")) {
+      const Keys drv = frc.sub("drive");
+      drv.allow({"v0", "tau"});
+      c.drive = true;
+      c.drive_v0 = drv.number("v0");
+      c.drive_tau = drv.positive("tau");
+    }
+  }
+
+  const Keys bnd = top.sub("boundary");
+  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles"});
+  c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
+  c.boundary.map = bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
+  c.boundary.velocity = bnd.choice("velocity", {"no_slip", "free_slip"}, "no_slip");
+  c.boundary.shepard =
+      bnd.choice("shepard", {"geometric", "volume", "monolithic", "none"}, "geometric");
+  c.boundary.wall_particles = bnd.boolean("wall_particles", false);
+  const YAML::Node walls = top.raw("walls");
+  if (top.has("walls") && !walls.IsSequence()) top.fail("walls", "must be a list of walls");
+  const bool has_walls = top.has("walls") && walls.size() > 0;
+  if (has_walls && c.boundary.method == "none")
+    bnd.fail(bnd.key("method"), "the case has walls; choose ghost or integrals");
+
+  const Keys setup = top.sub("setup");
+  setup.allow({"random_seed", "relax", "jitter"});
+  const long seed = setup.integer("random_seed", 1);
+  if (seed < 0) setup.fail(setup.key("random_seed"), "must be >= 0");
+  c.random_seed = static_cast<unsigned>(seed);
+  c.lattice_jitter = setup.boolean("jitter", false);
+  if (setup.has("relax")) {
+    const Keys relax = setup.sub("relax");
+    relax.allow({"max_steps", "tolerance"});
+    relax.integer("max_steps", 2000);
+    relax.positive("tolerance", 1e-3);
+  }
+
+  const Keys time = top.sub("time");
+  if (!top.has("time")) top.fail("time", "missing ({end, cfl})");
+  time.allow({"end", "cfl", "dt_max", "max_steps"});
+  c.t_end = time.non_negative("end");
+  c.cfl = time.positive("cfl", 0.2);
+  if (c.cfl > 1) time.fail(time.key("cfl"), "must be <= 1");
+  c.dt_max = time.non_negative("dt_max", 0.0);
+  c.max_steps = time.integer("max_steps", 0);
+  if (c.max_steps < 0) time.fail(time.key("max_steps"), "must be >= 0");
+
+  const Keys out = top.sub("output");
+  out.allow({"every", "probe_every", "vtk"});
+  c.output_every = out.non_negative("every", 0.0);
+  c.probe_every = out.non_negative("probe_every", 0.0);
+  c.write_vtk = out.boolean("vtk", true);
+
+  const YAML::Node probes = top.raw("probes");
+  if (top.has("probes") && !probes.IsSequence()) top.fail("probes", "must be a list of probes");
+  std::set<std::string> probe_names;
+  for (std::size_t i = 0; top.has("probes") && i < probes.size(); ++i) {
+    const Keys pk(probes[i], file, "probes." + std::to_string(i));
+    pk.allow({"name", "point", "fields", "gauge"});
+    ProbeSpec p;
+    p.name = pk.text("name");
+    if (!probe_names.insert(p.name).second) pk.fail(pk.key("name"), "duplicate probe name");
+    if (pk.has("gauge")) {
+      if (pk.has("point") || pk.has("fields"))
+        pk.fail(pk.key("gauge"), "a gauge takes no point or fields of its own");
+      const Keys g = pk.sub("gauge");
+      g.allow({"point", "direction"});
+      p.kind = ProbeSpec::Kind::gauge;
+      p.point = g.vector("point", D);
+      p.direction = g.vector("direction", D);
+      if (p.direction.norm() == 0) g.fail(g.key("direction"), "must not be zero");
+      p.direction.normalize();
+    } else {
+      p.point = pk.vector("point", D);
+      const YAML::Node fl = pk.raw("fields");
+      if (!fl || !fl.IsSequence() || fl.size() == 0)
+        pk.fail(pk.key("fields"), "missing (a list of: p, rho, vel)");
+      for (std::size_t k = 0; k < fl.size(); ++k) {
+        const std::string f = fl[k].IsScalar() ? fl[k].as<std::string>() : "";
+        if (f != "p" && f != "rho" && f != "vel")
+          pk.fail(pk.key("fields") + "." + std::to_string(k), "must be one of: p, rho, vel");
+        p.fields.push_back(f);
+      }
+    }
+    c.probes.push_back(p);
+  }
+
+  if (top.has("initial")) {
+    const YAML::Node ini = top.raw("initial");
+    if (!ini.IsMap() || ini.size() != 1)
+      top.fail("initial", "must name exactly one initial flow field, e.g. {taylor_green: {U: 1}}");
+    c.initial_field = ini.begin()->first.as<std::string>();
+    c.initial_params = ini.begin()->second;
+  }
+  if (top.has("analysis") && !top.raw("analysis").IsMap())
+    top.fail("analysis", "must be a mapping of analysis names to their parameters");
+  return c;
+}
+
+}  // namespace curvsph

@@ -1,0 +1,36 @@
+#pragma once
+// probes.csv (DESIGN.md §3): a header `time` then one column per probe quantity named
+// NAME.field (P1.p, P1.vel_x, ...; a gauge gives H1.height), one row per probe time.
+// Point values are Shepard-normalised SPH interpolations; a gauge's height is the distance
+// along its direction to the last point where the fluid fraction sum_j V_j W_j >= 1/2.
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+
+namespace curvsph {
+
+template <int D>
+class ProbeWriter {
+ public:
+  ProbeWriter(std::vector<ProbeSpec> probes, const std::string& path, Real dx);
+  bool empty() const { return probes_.empty(); }
+  // Column names after `time`.
+  std::vector<std::string> columns() const;
+  // Values in column order.
+  std::vector<double> sample(const Particles<D>& P, const CellList<D>& cells,
+                             const WendlandC2<D>& W) const;
+  void write_row(double t, const Particles<D>& P, const CellList<D>& cells,
+                 const WendlandC2<D>& W);
+
+ private:
+  std::vector<ProbeSpec> probes_;
+  std::ofstream out_;
+  Real dx_;
+};
+
+}  // namespace curvsph

@@ -1,0 +1,52 @@
+#pragma once
+// Density by summation (Barker eq. 8: sigma_i = sum_j W_ij, rho_i = m_i sigma_i) and by the
+// continuity equation with the delta-SPH diffusive term of Antuono et al. (2010, 2012):
+//   drho_i/dt = rho_i sum_j V_j (u_i - u_j).grad_i W_ij
+//             + delta h c0 sum_j V_j psi_ij.grad_i W_ij,
+//   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
+// where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j - x_i)]^-1,
+// exact for linear fields).
+#include <Eigen/LU>
+#include <vector>
+
+#include "curvsph/core/parallel.hpp"
+#include "curvsph/core/particles.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+
+namespace curvsph {
+
+template <int D>
+void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W) {
+  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+    Real s = 0;
+    cells.for_each_neighbor(P.x[i], P.x, [&](Index, const Vec<D>&, Real r2) {
+      s += W.value(std::sqrt(r2));
+    });
+    P.sigma[i] = s;
+    P.rho[i] = P.mass[i] * s;
+  });
+}
+
+// The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho.
+template <int D>
+void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
+                                   const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho) {
+  grad_rho.resize(P.size());
+  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+    Mat<D> M = Mat<D>::Zero();
+    Vec<D> g = Vec<D>::Zero();
+    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+      if (j == i) return;
+      const Vec<D> gradW = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
+      const Real Vj = P.mass[j] / P.rho[j];
+      M.noalias() -= Vj * gradW * r.transpose();  // grad W (x) (x_j - x_i), x_j - x_i = -r
+      g += Vj * (P.rho[j] - P.rho[i]) * gradW;
+    });
+    // An isolated particle (or a degenerate neighbourhood) keeps the plain gradient.
+    const Real det = M.determinant();
+    grad_rho[i] = std::abs(det) > Real(1e-3) ? Vec<D>(M.inverse() * g) : g;
+  });
+}
+
+}  // namespace curvsph

@@ -1,0 +1,178 @@
+#include "curvsph/solver/solver.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "curvsph/core/error.hpp"
+#include "curvsph/physics/density.hpp"
+#include "curvsph/physics/momentum.hpp"
+#include "curvsph/physics/particle_shifting.hpp"
+#include "curvsph/setup/generate.hpp"
+#include "curvsph/analysis/analysis.hpp"
+
+namespace curvsph {
+namespace {
+
+struct Stopwatch {
+  double& acc;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  ~Stopwatch() {
+    acc += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+};
+
+}  // namespace
+
+template <int D>
+Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
+  if (c.dimension != D) throw InputError(c.file_name(), "dimension", "solver dimension mismatch");
+  if (c.root["walls"] && c.root["walls"].IsSequence() && c.root["walls"].size() > 0)
+    throw InputError(c.file_name(), "walls",
+                     "wall boundaries are not available in this build yet (see issue #4/#5)");
+  generate_particles<D>(c, P_);
+  for (const auto& f : c.fluids) {
+    F_.rho0.push_back(static_cast<Real>(f.rho0));
+    F_.viscosity.push_back(static_cast<Real>(f.viscosity));
+    nu_max_ = std::max(nu_max_, static_cast<Real>(f.viscosity / f.rho0));
+  }
+  F_.eos.type = c.eos.type == EosSpec::Type::tait ? Eos::Type::tait : Eos::Type::linear;
+  F_.eos.c0 = static_cast<Real>(c.eos.c0);
+  F_.eos.gamma = static_cast<Real>(c.eos.gamma);
+  F_.eos.p0 = static_cast<Real>(c.eos.p0);
+  F_.gravity = c.gravity.head<D>().template cast<Real>();
+  F_.drive = c.drive;
+  F_.drive_v0 = static_cast<Real>(c.drive_v0);
+  F_.drive_tau = static_cast<Real>(c.drive_tau);
+  continuity_ = c.density.method == DensitySpec::Method::continuity;
+  F_.delta_sph = continuity_ ? static_cast<Real>(c.density.delta_sph) : 0;
+
+  Vec3d lo = c.domain_min, hi = c.domain_max;
+  for (int d = 0; d < D; ++d)
+    if (c.periodic[d] && !c.has_domain)
+      throw InputError(c.file_name(), "domain", "periodic axes need domain.min and domain.max");
+  cells_.configure(W_.support, lo, hi, c.periodic);
+  for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
+
+  if (!c.initial_field.empty())
+    apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+}
+
+template <int D>
+void Solver<D>::build_neighbors() {
+  Stopwatch sw{times_.neighbors};
+  cells_.build(P_.x);
+}
+
+template <int D>
+void Solver<D>::resort() {
+  // Re-sort every field by cell for memory locality. Done at the start of a step, on the
+  // previous build, so no per-step scratch array has to follow the permutation.
+  Stopwatch sw{times_.neighbors};
+  const auto& s = cells_.sorted();
+  order_.assign(s.begin(), s.end());
+  P_.permute(order_);
+}
+
+template <int D>
+void Solver<D>::compute_rates() {
+  {
+    Stopwatch sw{times_.density};
+    if (continuity_) {
+      update_pressure(P_, F_);
+      if (F_.delta_sph > 0) renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+    } else {
+      density_summation(P_, cells_, W_);
+      update_pressure(P_, F_);
+    }
+  }
+  Stopwatch sw{times_.forces};
+  fluid_forces(P_, cells_, W_, F_, continuity_, F_.delta_sph > 0 ? &grad_rho_ : nullptr);
+}
+
+template <int D>
+void Solver<D>::initialize() {
+  build_neighbors();
+  resort();
+  build_neighbors();
+  compute_rates();
+  check_state();
+}
+
+template <int D>
+Real Solver<D>::stable_dt() const {
+  const Index n = static_cast<Index>(P_.size());
+  const Real vmax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.v[i].squaredNorm(); }));
+  const Real amax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.a[i].squaredNorm(); }));
+  const Real h = W_.h;
+  const Real cfl = static_cast<Real>(case_.cfl);
+  Real dt = cfl * h / (F_.eos.c0 + vmax);                       // acoustic CFL
+  if (nu_max_ > 0) dt = std::min(dt, Real(0.125) * h * h / nu_max_);  // viscous (Morris 1997)
+  if (amax > 0) dt = std::min(dt, Real(0.25) * std::sqrt(h / amax));  // force (Monaghan 1992)
+  if (case_.dt_max > 0) dt = std::min(dt, static_cast<Real>(case_.dt_max));
+  return dt;
+}
+
+template <int D>
+void Solver<D>::step(Real dt_cap) {
+  if (steps_ > 0 && steps_ % kResortEvery == 0) resort();
+  dt_ = std::min(stable_dt(), dt_cap);
+  const Real half = dt_ / 2;
+  const Index n = static_cast<Index>(P_.size());
+  if (continuity_) rho_half_.resize(P_.size());
+  {
+    Stopwatch sw{times_.integrate};
+    // Kick (v, rho to the half step) and drift (x to the full step).
+    parallel_for(n, [&](Index i) {
+      P_.v[i] += half * P_.a[i];
+      P_.x[i] += dt_ * P_.v[i];
+      cells_.wrap(P_.x[i]);
+      if (continuity_) {
+        // Density predicted to the full step with the old rate for the pressure of this
+        // force pass, then corrected with the new rate: one force evaluation per step.
+        rho_half_[i] = P_.rho[i] + half * P_.drho[i];
+        P_.rho[i] = rho_half_[i] + half * P_.drho[i];
+      }
+    });
+  }
+  build_neighbors();
+  compute_rates();
+  {
+    Stopwatch sw{times_.integrate};
+    parallel_for(n, [&](Index i) {
+      P_.v[i] += half * P_.a[i];
+      if (continuity_) P_.rho[i] = rho_half_[i] + half * P_.drho[i];
+    });
+  }
+  if (case_.shifting > 0) {
+    Stopwatch sw{times_.integrate};
+    shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
+                    shift_);
+  }
+  t_ += dt_;
+  ++steps_;
+  check_state();
+}
+
+template <int D>
+void Solver<D>::check_state() const {
+  const Index n = static_cast<Index>(P_.size());
+  for (Index i = 0; i < n; ++i) {
+    const Real rho0 = F_.rho0[P_.phase[i]];
+    const bool finite = P_.x[i].allFinite() && P_.v[i].allFinite() && std::isfinite(P_.rho[i]);
+    if (!finite || P_.rho[i] < Real(0.5) * rho0 || P_.rho[i] > 2 * rho0) {
+      throw InstabilityError(
+          fmt::format("step {}, t = {:.6g}: particle {} has {} (rho = {:.6g}, rho0 = {:.6g}, "
+                      "|v| = {:.6g})",
+                      steps_, t_, P_.id[i], finite ? "density out of [0.5, 2] rho0" : "NaN/Inf",
+                      P_.rho[i], rho0, P_.v[i].norm()),
+          steps_, static_cast<long>(P_.id[i]));
+    }
+  }
+}
+
+template class Solver<2>;
+template class Solver<3>;
+
+}  // namespace curvsph

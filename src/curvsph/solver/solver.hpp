@@ -1,0 +1,71 @@
+#pragma once
+// One weakly-compressible SPH simulation: particles, neighbour search, the density and force
+// passes and kick-drift-kick time integration (DESIGN.md §1). Output and analysis live in
+// run.cpp; this class only advances the state.
+#include <limits>
+#include <vector>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/physics/fluid_terms.hpp"
+
+namespace curvsph {
+
+// Seconds spent per phase (DESIGN.md §6: measure, then optimise).
+struct PhaseTimes {
+  double neighbors = 0, boundary = 0, density = 0, forces = 0, integrate = 0, output = 0;
+};
+
+template <int D>
+class Solver {
+ public:
+  explicit Solver(const Case& c);
+
+  // Computes densities, pressures and accelerations of the initial state.
+  void initialize();
+  // Advances one time step of at most dt_cap (to land on output times); throws
+  // InstabilityError when the state goes bad.
+  void step(Real dt_cap = std::numeric_limits<Real>::infinity());
+
+  Real time() const { return t_; }
+  Real dt() const { return dt_; }
+  long steps() const { return steps_; }
+  Particles<D>& particles() { return P_; }
+  const Particles<D>& particles() const { return P_; }
+  const CellList<D>& cells() const { return cells_; }
+  const WendlandC2<D>& kernel() const { return W_; }
+  const FluidParams<D>& fluid() const { return F_; }
+  const Case& spec() const { return case_; }
+  const PhaseTimes& phase_times() const { return times_; }
+  PhaseTimes& phase_times() { return times_; }
+
+  // The time step the CFL, viscous and force limits allow for the current state.
+  Real stable_dt() const;
+  // Throws InstabilityError on NaN or density outside [0.5, 2] rho0.
+  void check_state() const;
+
+ private:
+  void build_neighbors();
+  void resort();
+  void compute_rates();
+
+  Case case_;
+  Particles<D> P_;
+  CellList<D> cells_;
+  WendlandC2<D> W_;
+  FluidParams<D> F_;
+  bool continuity_ = false;
+  std::vector<Vec<D>> grad_rho_;
+  std::vector<Real> rho_half_;
+  std::vector<Vec<D>> shift_;
+  std::vector<std::size_t> order_;
+  Real t_ = 0, dt_ = 0;
+  long steps_ = 0;
+  Real nu_max_ = 0;
+  PhaseTimes times_;
+  static constexpr long kResortEvery = 20;
+};
+
+}  // namespace curvsph

@@ -1,0 +1,378 @@
+#include "curvsph/boundary/integrals/shepard.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+
+#include "curvsph/kernels/boundary_kernel.hpp"
+#include "curvsph/kernels/wendland.hpp"
+
+namespace curvsph {
+
+ShepardMode shepard_mode_from_string(std::string_view name) {
+  if (name == "geometric") return ShepardMode::geometric;
+  if (name == "monolithic") return ShepardMode::monolithic;
+  if (name == "volume") return ShepardMode::volume;
+  if (name == "none") return ShepardMode::none;
+  throw std::invalid_argument("unknown Shepard mode '" + std::string(name) +
+                              "' (expected geometric | monolithic | volume | none)");
+}
+
+const char* to_string(ShepardMode mode) {
+  switch (mode) {
+    case ShepardMode::geometric:
+      return "geometric";
+    case ShepardMode::monolithic:
+      return "monolithic";
+    case ShepardMode::volume:
+      return "volume";
+    case ShepardMode::none:
+      return "none";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// Gauss-Legendre rule on [0, 1] with n points (Newton on P_n), cached per n.
+struct GaussRule {
+  std::vector<double> x, w;
+};
+const GaussRule& gauss_rule(int n) {
+  static std::mutex mutex;
+  static std::vector<GaussRule> cache(33);
+  n = std::clamp(n, 1, 32);
+  std::lock_guard lock(mutex);
+  GaussRule& r = cache[static_cast<std::size_t>(n)];
+  if (r.x.empty()) {
+    r.x.resize(static_cast<std::size_t>(n));
+    r.w.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1;
+      for (int it = 0; it < 100; ++it) {
+        double p0 = 1, p1 = 0;
+        for (int k = 1; k <= n; ++k) {
+          const double p2 = p1;
+          p1 = p0;
+          p0 = ((2 * k - 1) * z * p1 - (k - 1) * p2) / k;
+        }
+        dp = n * (z * p0 - p1) / (z * z - 1);
+        const double dz = p0 / dp;
+        z -= dz;
+        if (std::abs(dz) < 1e-16) break;
+      }
+      r.x[static_cast<std::size_t>(i)] = 0.5 * (1 - z);
+      r.w[static_cast<std::size_t>(i)] = 1.0 / ((1 - z * z) * dp * dp);  // 2/((1-z^2)P'^2) / 2
+    }
+  }
+  return r;
+}
+
+double cross2(const Vec2d& a, const Vec2d& b) {
+  return a[0] * b[1] - a[1] * b[0];
+}
+
+// Arc geometry of a 2-D element with curvature kappa != 0: circle centre O.
+Vec2d arc_circle_centre(const BoundaryElements<2>& el, std::size_t j) {
+  return el.centre[j] + el.normal[j] / el.curvature[j];  // c - O = -n / kappa
+}
+
+bool point_in_polygon(const BoundaryElements<3>& el, std::size_t j, const Vec3d& p, double tol) {
+  const auto& v = el.vertices[j];
+  const int m = el.vertex_count[j];
+  for (int k = 0; k < m; ++k) {
+    const Vec3d& a = v[static_cast<std::size_t>(k)];
+    const Vec3d& b = v[static_cast<std::size_t>((k + 1) % m)];
+    const Vec3d e = b - a;
+    if (e.cross(p - a).dot(el.normal[j]) < -tol * e.norm()) return false;
+  }
+  return true;
+}
+
+double segment_distance(const Vec3d& a, const Vec3d& b, const Vec3d& x) {
+  const Vec3d e = b - a;
+  const double t = std::clamp(e.dot(x - a) / e.squaredNorm(), 0.0, 1.0);
+  return (a + t * e - x).norm();
+}
+
+// Distance from x to element j (exact for segments, arcs and planar polygons).
+double element_distance(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x) {
+  const Vec2d& a = el.vertices[j][0];
+  const Vec2d& b = el.vertices[j][1];
+  const double kappa = el.curvature[j];
+  const double end = std::min((x - a).norm(), (x - b).norm());
+  if (kappa == 0.0) {
+    const Vec2d e = b - a;
+    const double t = std::clamp(e.dot(x - a) / e.squaredNorm(), 0.0, 1.0);
+    return (a + t * e - x).norm();
+  }
+  const Vec2d O = arc_circle_centre(el, j);
+  const double R = 1.0 / std::abs(kappa);
+  const double r = (x - O).norm();
+  if (r == 0.0) return R;
+  const Vec2d y = O + (x - O) * (R / r);
+  const double side = el.normal[j].dot(y - a);
+  const bool on_arc = kappa > 0 ? side <= 0 : side >= 0;
+  return on_arc ? std::abs(r - R) : end;
+}
+
+double element_distance(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x) {
+  const auto& v = el.vertices[j];
+  const double s = el.normal[j].dot(x - v[0]);
+  const Vec3d p = x - s * el.normal[j];
+  if (point_in_polygon(el, j, p, 0.0)) return std::abs(s);
+  double d = std::numeric_limits<double>::infinity();
+  const int m = el.vertex_count[j];
+  for (int k = 0; k < m; ++k)
+    d = std::min(d, segment_distance(v[static_cast<std::size_t>(k)],
+                                     v[static_cast<std::size_t>((k + 1) % m)], x));
+  return d;
+}
+
+// ---- Polynomial part: int_j n(y).(y - x) F_Pext(|y - x|) dy -----------------------------
+
+double poly_part(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x,
+                 const BoundaryKernel<2>& F, const ShepardQuadrature& q) {
+  const GaussRule& g = gauss_rule(q.gauss_points);
+  const Vec2d& a = el.vertices[j][0];
+  const Vec2d& b = el.vertices[j][1];
+  const Vec2d n = el.normal[j];
+  const double kappa = el.curvature[j];
+  const double L = el.area[j];
+  const double max_piece = q.max_piece_over_h * F.h;
+  const Vec2d t = (b - a).normalized();
+  double s_lo, s_hi, s_foot;
+  if (kappa == 0.0) {
+    const double dn = n.dot(a - x);
+    if (std::abs(dn) <= 1e-14 * F.h) return 0.0;  // x on the element's line
+    s_lo = 0;
+    s_hi = (b - a).norm();
+    s_foot = t.dot(x - a);
+  } else {
+    s_lo = -0.5 * L;
+    s_hi = 0.5 * L;
+    s_foot = t.dot(x - el.centre[j]);
+  }
+  const Vec2d c = el.centre[j];
+  auto integrand = [&](double s) {
+    if (kappa == 0.0) {
+      const Vec2d y = a + s * t;
+      return n.dot(y - x) * F.polynomial_extended((y - x).norm());
+    }
+    // y(s) = O + (c - O) cos(s k) + t sin(s k)/k with c - O = -n/k; n(s) = (O - y) k.
+    const double cs = std::cos(s * kappa), sn = std::sin(s * kappa);
+    const Vec2d y = c + n * ((1.0 - cs) / kappa) + t * (sn / kappa);
+    const Vec2d ns = n * cs - t * sn;
+    return ns.dot(y - x) * F.polynomial_extended((y - x).norm());
+  };
+  double cuts[3] = {s_lo, s_hi, s_hi};
+  int ncut = 2;
+  if (s_foot > s_lo && s_foot < s_hi) {
+    cuts[1] = s_foot;
+    cuts[2] = s_hi;
+    ncut = 3;
+  }
+  double sum = 0;
+  for (int p = 0; p + 1 < ncut; ++p) {
+    const double len = cuts[p + 1] - cuts[p];
+    if (len <= 0) continue;
+    const int m = std::max(1, static_cast<int>(std::ceil(len / max_piece)));
+    const double dl = len / m;
+    for (int k = 0; k < m; ++k) {
+      const double s0 = cuts[p] + k * dl;
+      for (std::size_t i = 0; i < g.x.size(); ++i) sum += g.w[i] * dl * integrand(s0 + g.x[i] * dl);
+    }
+  }
+  return sum;
+}
+
+// int over triangle (p0, p1, p2) of f, collapsed (Duffy) Gauss rule with p0 the collapsed
+// vertex, sub-divided until the longest edge is <= max_edge.
+template <class Fn>
+double triangle_integral(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, double max_edge,
+                         const GaussRule& g, const Fn& f, int depth = 0) {
+  const double longest = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()});
+  if (longest > max_edge && depth < 8) {
+    const Vec3d m01 = 0.5 * (p0 + p1), m12 = 0.5 * (p1 + p2), m20 = 0.5 * (p2 + p0);
+    return triangle_integral(p0, m01, m20, max_edge, g, f, depth + 1) +
+           triangle_integral(m01, p1, m12, max_edge, g, f, depth + 1) +
+           triangle_integral(m20, m12, p2, max_edge, g, f, depth + 1) +
+           triangle_integral(m12, m20, m01, max_edge, g, f, depth + 1);
+  }
+  const double twice_area = (p1 - p0).cross(p2 - p0).norm();
+  if (twice_area <= 0) return 0.0;
+  double sum = 0;
+  for (std::size_t i = 0; i < g.x.size(); ++i) {
+    const double u = g.x[i];
+    for (std::size_t k = 0; k < g.x.size(); ++k) {
+      const double w = g.x[k];
+      const Vec3d y = p0 + u * (p1 - p0) + u * w * (p2 - p1);
+      sum += g.w[i] * g.w[k] * u * f(y);
+    }
+  }
+  return sum * twice_area;
+}
+
+double poly_part(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x,
+                 const BoundaryKernel<3>& F, const ShepardQuadrature& q) {
+  const Vec3d n = el.normal[j];
+  const auto& v = el.vertices[j];
+  const int m = el.vertex_count[j];
+  const double dn = n.dot(v[0] - x);
+  if (std::abs(dn) <= 1e-14 * F.h) return 0.0;
+  const GaussRule& g = gauss_rule(q.gauss_points);
+  auto f = [&](const Vec3d& y) { return F.polynomial_extended((y - x).norm()); };
+  const double max_edge = q.max_piece_over_h * F.h;
+  const Vec3d foot = x + dn * n;
+  double sum = 0;
+  if (point_in_polygon(el, j, foot, 1e-12 * F.h)) {
+    for (int k = 0; k < m; ++k)
+      sum += triangle_integral(foot, v[static_cast<std::size_t>(k)],
+                               v[static_cast<std::size_t>((k + 1) % m)], max_edge, g, f);
+  } else {
+    for (int k = 1; k + 1 < m; ++k)
+      sum += triangle_integral(v[0], v[static_cast<std::size_t>(k)],
+                               v[static_cast<std::size_t>(k + 1)], max_edge, g, f);
+  }
+  return dn * sum;
+}
+
+template <int D>
+constexpr double sphere_measure() {
+  return D == 2 ? 2 * pi : 4 * pi;
+}
+
+}  // namespace
+
+template <>
+double subtended_angle<2>(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x) {
+  const Vec2d& a = el.vertices[j][0];
+  const Vec2d& b = el.vertices[j][1];
+  const Vec2d u = a - x, w = b - x;
+  const double theta = std::atan2(std::abs(cross2(u, w)), u.dot(w));
+  const double side = el.normal[j].dot(x - a);
+  double angle = side >= 0 ? theta : -theta;
+  const double kappa = el.curvature[j];
+  if (kappa != 0.0) {
+    // x between the chord and the arc: the arc wraps around x the other way.
+    const Vec2d O = arc_circle_centre(el, j);
+    const bool inside_circle = (x - O).norm() < 1.0 / std::abs(kappa);
+    if (inside_circle && (kappa > 0 ? side < 0 : side > 0)) angle += kappa > 0 ? 2 * pi : -2 * pi;
+  }
+  return angle;
+}
+
+template <>
+double subtended_angle<3>(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x) {
+  const auto& v = el.vertices[j];
+  const int m = el.vertex_count[j];
+  const Vec3d a = (v[0] - x).normalized();
+  double omega = 0;
+  for (int k = 1; k + 1 < m; ++k) {
+    const Vec3d b = (v[static_cast<std::size_t>(k)] - x).normalized();
+    const Vec3d c = (v[static_cast<std::size_t>(k + 1)] - x).normalized();
+    // Van Oosterom & Strackee with unit vectors; the vertices run counter-clockwise seen
+    // from the fluid, so a.(b x c) < 0 there: the minus sign makes the fluid side positive.
+    omega -= 2.0 * std::atan2(a.dot(b.cross(c)), 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
+  }
+  return omega;
+}
+
+template <int D>
+double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                         const ShepardQuadrature& quad) {
+  const BoundaryKernel<D> F(h);
+  const double support = 2.0 * h;
+  const double tol = quad.on_wall_tolerance * h;
+  // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
+  std::vector<std::size_t> near;
+  VecD<D> mean_normal = VecD<D>::Zero();
+  for (std::size_t j = 0; j < el.size(); ++j) {
+    if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) continue;
+    near.push_back(j);
+    if (element_distance(el, j, x) <= tol) mean_normal += el.normal[j];
+  }
+  // On the wall: the singular part is the limit from the fluid side along the mean normal of
+  // the touched elements (makes contact points, vertices and corner apexes exact).
+  VecD<D> xs = x;
+  const double mn = mean_normal.norm();
+  if (mn > 1e-12) xs = x + (1e-9 * h / mn) * mean_normal;
+  double angles = 0, poly = 0;
+  for (std::size_t j : near) {
+    angles += subtended_angle<D>(el, j, xs);
+    poly += poly_part(el, j, x, F, quad);
+  }
+  return 1.0 - angles / sphere_measure<D>() - poly;
+}
+
+template <int D>
+double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h) {
+  const BoundaryKernel<D> F(h);
+  double sum = 0;
+  for (std::size_t j = 0; j < el.size(); ++j) {
+    const VecD<D> r = el.centre[j] - x;
+    const double rn = r.norm();
+    if (rn >= 2.0 * h || rn <= 1e-12 * h) continue;
+    sum += el.normal[j].dot(r) * F.value(rn) * el.area[j];
+  }
+  return 1.0 - sum;
+}
+
+template <int D>
+double shepard_volume(std::span<const VecD<D>> positions, std::span<const double> volumes,
+                      const VecD<D>& x, double h) {
+  if (positions.size() != volumes.size())
+    throw std::invalid_argument("shepard_volume: positions and volumes differ in size");
+  const WendlandC2<D> W(static_cast<Real>(h));
+  const double s2 = 4.0 * h * h;
+  double sum = 0;
+  for (std::size_t j = 0; j < positions.size(); ++j) {
+    const double r2 = (positions[j] - x).squaredNorm();
+    if (r2 < s2) sum += static_cast<double>(W.value(static_cast<Real>(std::sqrt(r2)))) * volumes[j];
+  }
+  return sum;
+}
+
+template <int D>
+std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& el,
+                                   std::span<const VecD<D>> points, double h,
+                                   std::span<const VecD<D>> fluid_positions,
+                                   std::span<const double> fluid_volumes,
+                                   const ShepardQuadrature& quad) {
+  std::vector<double> out(points.size(), 1.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    switch (mode) {
+      case ShepardMode::geometric:
+        out[i] = shepard_geometric<D>(el, points[i], h, quad);
+        break;
+      case ShepardMode::monolithic:
+        out[i] = shepard_monolithic<D>(el, points[i], h);
+        break;
+      case ShepardMode::volume:
+        out[i] = shepard_volume<D>(fluid_positions, fluid_volumes, points[i], h);
+        break;
+      case ShepardMode::none:
+        break;
+    }
+  }
+  return out;
+}
+
+#define CURVSPH_SHEPARD_INSTANTIATE(D)                                                       \
+  template double shepard_geometric<D>(const BoundaryElements<D>&, const VecD<D>&, double,   \
+                                       const ShepardQuadrature&);                            \
+  template double shepard_monolithic<D>(const BoundaryElements<D>&, const VecD<D>&, double); \
+  template double shepard_volume<D>(std::span<const VecD<D>>, std::span<const double>,       \
+                                    const VecD<D>&, double);                                 \
+  template std::vector<double> shepard_factor<D>(                                            \
+      ShepardMode, const BoundaryElements<D>&, std::span<const VecD<D>>, double,             \
+      std::span<const VecD<D>>, std::span<const double>, const ShepardQuadrature&);
+CURVSPH_SHEPARD_INSTANTIATE(2)
+CURVSPH_SHEPARD_INSTANTIATE(3)
+#undef CURVSPH_SHEPARD_INSTANTIATE
+
+}  // namespace curvsph

@@ -1,0 +1,67 @@
+#pragma once
+// Shepard factor gamma(x) = int_fluid W(y - x) dy near walls (Calderon et al.; DESIGN.md §4).
+// With n the element normal pointing INTO the fluid,
+//   gamma(x) = 1 - int_dOmega n(y).(y - x) F(|y - x|) dy      (x in the closed fluid domain).
+// Modes (case key boundary.shepard):
+//  - geometric:  F = F_D + F_Pext (kernels/boundary_kernel.hpp). The singular part is exact:
+//                int_j n.(y - x) F_D = dtheta_j / (2 pi) (2-D), dOmega_j / (4 pi) (3-D), the
+//                angle / solid angle element j subtends at x, positive seen from the fluid;
+//                the polynomial part F_Pext is integrated with Gauss points (split at the
+//                foot of x, sub-divided to pieces <= h/2; on arcs along the true arc).
+//                Elements entirely beyond 2h contribute exactly nothing; elements crossing
+//                the support sphere are integrated whole (F_Pext is smooth across 2h).
+//                A point on the wall (within tolerance) is treated as the limit from the
+//                fluid side along the mean normal of the elements it touches, so that the
+//                contact point, a corner apex and a vertex between elements get gamma right.
+//  - monolithic: all of F summed at the element centres (the paper's foil).
+//  - volume:     gamma_i = sum_j W_ij V_j over fluid particles (Calderon eq. 4).
+//  - none:       gamma = 1.
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "curvsph/boundary/integrals/boundary_elements.hpp"
+#include "curvsph/core/types.hpp"
+
+namespace curvsph {
+
+enum class ShepardMode { geometric, monolithic, volume, none };
+
+// "geometric" | "monolithic" | "volume" | "none"; throws std::invalid_argument otherwise.
+ShepardMode shepard_mode_from_string(std::string_view name);
+const char* to_string(ShepardMode mode);
+
+struct ShepardQuadrature {
+  int gauss_points = 4;             // per piece (2-D) or per direction per triangle (3-D)
+  double max_piece_over_h = 0.5;    // sub-divide elements into pieces no longer than this * h
+  double on_wall_tolerance = 1e-9;  // in units of h: closer than this counts as on the wall
+};
+
+// Signed angle (2-D) / solid angle (3-D) element j subtends at x, positive when x is on the
+// fluid side. 2-D arcs: the angle of the arc itself (not only of its chord).
+template <int D>
+double subtended_angle(const BoundaryElements<D>& el, std::size_t j, const VecD<D>& x);
+
+template <int D>
+double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                         const ShepardQuadrature& quad = {});
+
+template <int D>
+double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h);
+
+template <int D>
+double shepard_volume(std::span<const VecD<D>> positions, std::span<const double> volumes,
+                      const VecD<D>& x, double h);
+
+// gamma at every point of `points` (brute force over elements / fluid particles; the solver
+// will feed candidates from its cell list). `fluid_positions` / `fluid_volumes` are used by
+// the volume mode only.
+template <int D>
+std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& el,
+                                   std::span<const VecD<D>> points, double h,
+                                   std::span<const VecD<D>> fluid_positions = {},
+                                   std::span<const double> fluid_volumes = {},
+                                   const ShepardQuadrature& quad = {});
+
+}  // namespace curvsph

@@ -1,0 +1,137 @@
+#include "curvsph/io/vtk_reader.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+
+namespace curvsph::io {
+
+namespace {
+
+std::string xml_unescape(const std::string& s) {
+  static const std::pair<const char*, char> table[] = {
+      {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    bool done = false;
+    if (s[i] == '&') {
+      for (const auto& [ent, c] : table) {
+        if (s.compare(i, std::char_traits<char>::length(ent), ent) == 0) {
+          out += c;
+          i += std::char_traits<char>::length(ent);
+          done = true;
+          break;
+        }
+      }
+    }
+    if (!done) out += s[i++];
+  }
+  return out;
+}
+
+// Attributes of one tag body `<Name a="..." b="...">`.
+std::map<std::string, std::string> attributes(const std::string& tag) {
+  std::map<std::string, std::string> out;
+  std::size_t i = 0;
+  while (true) {
+    const std::size_t eq = tag.find('=', i);
+    if (eq == std::string::npos) break;
+    std::size_t k = eq;
+    while (k > 0 && tag[k - 1] == ' ') --k;
+    std::size_t b = k;
+    while (b > 0 && tag[b - 1] != ' ' && tag[b - 1] != '\n' && tag[b - 1] != '\t') --b;
+    const std::size_t q1 = tag.find('"', eq);
+    const std::size_t q2 = q1 == std::string::npos ? q1 : tag.find('"', q1 + 1);
+    if (q2 == std::string::npos) break;
+    out[tag.substr(b, k - b)] = xml_unescape(tag.substr(q1 + 1, q2 - q1 - 1));
+    i = q2 + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+VtkPolyData read_vtp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open '" + path.string() + "'");
+  const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error("'" + path.string() + "': " + what);
+  };
+
+  const std::size_t appended = file.find("<AppendedData");
+  if (file.find("<VTKFile") == std::string::npos ||
+      file.find("type=\"PolyData\"") == std::string::npos)
+    fail("not a VTK PolyData file");
+  if (appended == std::string::npos)
+    fail("no <AppendedData> section (only appended files are read)");
+  {
+    const std::size_t vtk = file.find("<VTKFile");
+    const auto head = attributes(file.substr(vtk, file.find('>', vtk) - vtk));
+    if (head.count("header_type") && head.at("header_type") != "UInt64")
+      fail("header_type must be UInt64");
+    if (head.count("byte_order") && head.at("byte_order") != "LittleEndian")
+      fail("byte_order must be LittleEndian");
+    const std::size_t a = file.find('>', appended);
+    const auto app = attributes(file.substr(appended, a - appended));
+    if (!app.count("encoding") || app.at("encoding") != "raw") fail("encoding must be raw");
+  }
+  const std::size_t underscore = file.find('_', file.find('>', appended));
+  if (underscore == std::string::npos) fail("missing '_' marker of the appended data");
+  const std::size_t data0 = underscore + 1;
+
+  VtkPolyData out;
+  std::size_t n_points = 0;
+  {
+    const std::size_t piece = file.find("<Piece");
+    if (piece == std::string::npos || piece > appended) fail("no <Piece>");
+    const auto attrs = attributes(file.substr(piece, file.find('>', piece) - piece));
+    if (!attrs.count("NumberOfPoints")) fail("<Piece> without NumberOfPoints");
+    n_points = std::stoull(attrs.at("NumberOfPoints"));
+  }
+
+  // Walk the XML part, tracking the enclosing section of each DataArray.
+  std::string section;
+  for (std::size_t pos = 0; pos < appended;) {
+    const std::size_t lt = file.find('<', pos);
+    if (lt == std::string::npos || lt >= appended) break;
+    const std::size_t gt = file.find('>', lt);
+    if (gt == std::string::npos) fail("unterminated tag");
+    const std::string tag = file.substr(lt + 1, gt - lt - 1);
+    pos = gt + 1;
+    for (const char* s : {"PointData", "Points", "Verts", "CellData"}) {
+      const std::string name(s);
+      if (tag.rfind(name, 0) == 0 && (tag.size() == name.size() || tag[name.size()] == ' ' ||
+                                      tag[name.size()] == '/' || tag[name.size()] == '>'))
+        section = name;
+      if (tag == "/" + name) section.clear();
+    }
+    if (tag.rfind("DataArray", 0) != 0) continue;
+    const auto attrs = attributes(tag);
+    if (!attrs.count("format") || attrs.at("format") != "appended")
+      fail("DataArray not in appended format");
+    VtkArray a;
+    a.name = attrs.count("Name") ? attrs.at("Name") : "";
+    a.type = vtk_type_from_name(attrs.at("type"));
+    a.components =
+        attrs.count("NumberOfComponents") ? std::stoi(attrs.at("NumberOfComponents")) : 1;
+    const std::size_t offset = std::stoull(attrs.at("offset"));
+    if (data0 + offset + 8 > file.size()) fail("appended data truncated");
+    std::uint64_t nbytes = 0;
+    std::memcpy(&nbytes, file.data() + data0 + offset, 8);
+    if (data0 + offset + 8 + nbytes > file.size()) fail("appended data truncated");
+    a.bytes.resize(nbytes);
+    std::memcpy(a.bytes.data(), file.data() + data0 + offset + 8, nbytes);
+    if (section == "Points") {
+      out.set_points_array(std::move(a));
+    } else if (section == "PointData") {
+      if (a.tuples() != n_points) fail("array '" + a.name + "' size differs from NumberOfPoints");
+      out.add_array(std::move(a));
+    }
+  }
+  if (out.number_of_points() != n_points) fail("Points size differs from NumberOfPoints");
+  return out;
+}
+
+}  // namespace curvsph::io

@@ -1,0 +1,269 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "curvsph/boundary/integrals/boundary_elements.hpp"
+#include "curvsph/boundary/integrals/shepard.hpp"
+#include "curvsph/kernels/wendland.hpp"
+
+using namespace curvsph;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double h = 1.0;
+constexpr double dx = 0.5;  // h/dx = 2
+
+// ---- Independent reference: gamma(x) = int over the fluid part of the support disc of W,
+// in polar coordinates about x. The fluid part of each ray is found from an inside(y)
+// predicate (sampling + bisection), the radial integral by 8-point Gauss-Legendre per
+// interval (exact: W r is a polynomial of degree 6), the angle by adaptive Simpson.
+double radial_mass(double r1, double r2) {
+  static const double xg[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                               0.7966664774136267,  0.9602898564975363};
+  static const double wg[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                               0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                               0.2223810344533745, 0.1012285362903763};
+  const WendlandC2<2> W(h);
+  double s = 0;
+  for (int i = 0; i < 8; ++i) {
+    const double r = 0.5 * (r1 + r2) + 0.5 * (r2 - r1) * xg[i];
+    s += wg[i] * W.value(r) * r;
+  }
+  return 0.5 * (r2 - r1) * s;
+}
+
+double ray_integral(const Vec2d& x, double phi, const std::function<bool(const Vec2d&)>& inside) {
+  const Vec2d e(std::cos(phi), std::sin(phi));
+  const int n = 400;
+  const double R = 2 * h;
+  double sum = 0, start = 0;
+  bool in = inside(x + 1e-13 * e);
+  for (int k = 1; k <= n; ++k) {
+    const double r = R * k / n;
+    const bool now = inside(x + r * e);
+    if (now != in) {
+      double lo = R * (k - 1) / n, hi = r;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (inside(x + mid * e) == in ? lo : hi) = mid;
+      }
+      if (in) sum += radial_mass(start, lo);
+      start = lo;
+      in = now;
+    }
+  }
+  if (in) sum += radial_mass(start, R);
+  return sum;
+}
+
+double simpson(const std::function<double(double)>& f, double a, double b, double fa, double fm,
+               double fb, double whole, double tol, int depth) {
+  const double m = 0.5 * (a + b), lm = 0.5 * (a + m), rm = 0.5 * (m + b);
+  const double flm = f(lm), frm = f(rm);
+  const double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
+  if (depth <= 0 || std::abs(left + right - whole) <= 15 * tol)
+    return left + right + (left + right - whole) / 15;
+  return simpson(f, a, m, fa, flm, fm, left, tol / 2, depth - 1) +
+         simpson(f, m, b, fm, frm, fb, right, tol / 2, depth - 1);
+}
+
+double reference_gamma(const Vec2d& x, const std::function<bool(const Vec2d&)>& inside) {
+  auto f = [&](double phi) { return ray_integral(x, phi, inside); };
+  double total = 0;
+  for (int s = 0; s < 16; ++s) {  // 16 sectors, adaptive inside each
+    const double a = 2 * pi * s / 16, b = 2 * pi * (s + 1) / 16;
+    const double fa = f(a), fb = f(b), fm = f(0.5 * (a + b));
+    total += simpson(f, a, b, fa, fm, fb, (b - a) / 6 * (fa + 4 * fm + fb), 1e-9, 20);
+  }
+  return total;
+}
+
+// ---- Geometries (fluid region predicates and elements at spacing dx).
+bool upper_half(const Vec2d& y) {
+  return y[1] >= 0;
+}
+BoundaryElements<2> flat_wall() {
+  return polyline_elements({{-6, 0}, {6, 0}}, dx);
+}
+
+std::function<bool(const Vec2d&)> wedge(double alpha) {
+  return [alpha](const Vec2d& y) {
+    return y[1] >= 0 && (std::sin(alpha) * y[0] - std::cos(alpha) * y[1]) >= 0;
+  };
+}
+BoundaryElements<2> wedge_walls(double alpha, double L = 6) {
+  return polyline_elements({{L * std::cos(alpha), L * std::sin(alpha)}, {0, 0}, {L, 0}}, dx);
+}
+
+}  // namespace
+
+TEST(ShepardReference, DesignFlatWallValues) {
+  // The reference quadrature itself against DESIGN.md §4 (and an independent mpmath check).
+  EXPECT_NEAR(reference_gamma({0.3, 0.1}, upper_half), 0.573815, 2e-6);
+  EXPECT_NEAR(reference_gamma({0.0, 0.5}, upper_half), 0.823497, 2e-6);
+  EXPECT_NEAR(reference_gamma({0.0, 1.0}, upper_half), 0.971491, 2e-6);
+}
+
+TEST(ShepardGeometric, FarFromWallsIsOne) {
+  EXPECT_NEAR(shepard_geometric<2>(flat_wall(), Vec2d(0, 2.0001), h), 1.0, 1e-10);
+  EXPECT_DOUBLE_EQ(shepard_geometric<2>(flat_wall(), Vec2d(0, 2.6), h), 1.0);
+  EXPECT_NEAR(shepard_geometric<2>(flat_wall(), Vec2d(0.1, 1.9999), h), 1.0, 1e-10);
+}
+
+TEST(ShepardGeometric, FlatWallDesignValues) {
+  const auto el = flat_wall();
+  EXPECT_NEAR(shepard_geometric<2>(el, Vec2d(0.0, 0.0), h), 0.5, 1e-8);
+  EXPECT_NEAR(shepard_geometric<2>(el, Vec2d(0.25, 0.0), h), 0.5, 1e-8);
+  EXPECT_NEAR(shepard_geometric<2>(el, Vec2d(0.1, 0.1), h), 0.573815, 1e-5);
+  EXPECT_NEAR(shepard_geometric<2>(el, Vec2d(0.0, 0.5), h), 0.823497, 1e-5);
+  EXPECT_NEAR(shepard_geometric<2>(el, Vec2d(0.37, 1.0), h), 0.971491, 1e-5);
+}
+
+TEST(ShepardGeometric, FlatWallApproach) {
+  const auto el = flat_wall();
+  for (double x0 : {0.0, 0.25, 0.1}) {
+    for (int k = 0; k <= 40; ++k) {
+      const Vec2d x(x0, 2 * h * (1 - k / 40.0));
+      EXPECT_NEAR(shepard_geometric<2>(el, x, h), reference_gamma(x, upper_half), 0.005)
+          << x.transpose();
+    }
+  }
+}
+
+TEST(ShepardGeometric, CornerApexAngles) {
+  EXPECT_NEAR(shepard_geometric<2>(wedge_walls(pi / 2), Vec2d(0, 0), h), 0.25, 1e-8);
+  EXPECT_NEAR(shepard_geometric<2>(wedge_walls(pi / 3), Vec2d(0, 0), h), 1.0 / 6, 1e-8);
+  EXPECT_NEAR(shepard_geometric<2>(wedge_walls(2 * pi / 3), Vec2d(0, 0), h), 1.0 / 3, 1e-8);
+}
+
+TEST(ShepardGeometric, CornerApproachSideAndDiagonal) {
+  const auto el = wedge_walls(pi / 2);
+  const auto in = wedge(pi / 2);
+  for (int k = 0; k <= 30; ++k) {
+    const double t = 3 * h * (1 - k / 30.0);
+    for (const Vec2d& x : {Vec2d(t, 0), Vec2d(t, 0.5 * dx), Vec2d(Vec2d(t, t) / std::sqrt(2.0))}) {
+      EXPECT_NEAR(shepard_geometric<2>(el, x, h), reference_gamma(x, in), 0.005) << x.transpose();
+    }
+  }
+}
+
+TEST(ShepardGeometric, CircleApproachInsideAndOutside) {
+  const double R = 4 * h;
+  for (bool inside : {true, false}) {
+    for (double start : {0.0, 0.5 * dx / R}) {
+      const auto el = circle_elements(Vec2d(0, 0), R, dx, inside, start);
+      auto region = [&](const Vec2d& y) { return inside ? y.norm() <= R : y.norm() >= R; };
+      for (int k = 0; k <= 30; ++k) {
+        const double d = 2 * h * (1 - k / 30.0);
+        const Vec2d x(inside ? R - d : R + d, 0);
+        EXPECT_NEAR(shepard_geometric<2>(el, x, h), reference_gamma(x, region), 0.005)
+            << "inside " << inside << " d " << d;
+      }
+    }
+  }
+}
+
+TEST(ShepardGeometric, SubtendedAnglesCloseAroundInteriorPoints) {
+  const auto poly = polyline_elements({{0, 0}, {3, 0}, {3, 2}, {0, 2}}, dx, true);
+  const auto circ = circle_elements(Vec2d(1, 1), 2.0, 0.3, true);
+  for (const Vec2d& x : {Vec2d(1, 1), Vec2d(2.9, 0.05)}) {
+    double s1 = 0, s2 = 0;
+    const Vec2d xc = Vec2d(1, 1) + 0.99 * (x - Vec2d(1, 1)).normalized() *
+                                       ((x - Vec2d(1, 1)).norm() > 0 ? 2.0 : 0.0);
+    for (std::size_t j = 0; j < poly.size(); ++j) s1 += subtended_angle<2>(poly, j, x);
+    for (std::size_t j = 0; j < circ.size(); ++j) s2 += subtended_angle<2>(circ, j, xc);
+    EXPECT_NEAR(s1, 2 * pi, 1e-12);
+    EXPECT_NEAR(s2, 2 * pi, 1e-12);
+  }
+  // Outside a closed wall the angles cancel.
+  double s = 0;
+  for (std::size_t j = 0; j < poly.size(); ++j) s += subtended_angle<2>(poly, j, Vec2d(5, 1));
+  EXPECT_NEAR(s, 0.0, 1e-12);
+  // 3-D: a closed cube subtends 4 pi at an interior point (fluid inside).
+  BoundaryElements<3> cube;
+  const Vec3d o(0, 0, 0);
+  const Vec3d ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  cube.append(rectangle_elements(o, ex, ey, 0.25));       // z = 0, normal +z
+  cube.append(rectangle_elements(o + ez, ey, ex, 0.25));  // z = 1, normal -z
+  cube.append(rectangle_elements(o, ez, ex, 0.25));       // y = 0, normal +y
+  cube.append(rectangle_elements(o + ey, ex, ez, 0.25));  // y = 1, normal -y
+  cube.append(rectangle_elements(o, ey, ez, 0.25));       // x = 0, normal +x
+  cube.append(rectangle_elements(o + ex, ez, ey, 0.25));  // x = 1, normal -x
+  double omega = 0;
+  for (std::size_t j = 0; j < cube.size(); ++j)
+    omega += subtended_angle<3>(cube, j, Vec3d(0.3, 0.6, 0.2));
+  EXPECT_NEAR(omega, 4 * pi, 1e-10);
+}
+
+namespace {
+// 3-D flat wall reference: 1 - int_{z < -d} W = 1 - int_d^2h W(r) 2 pi r (r - d) dr.
+double reference_flat_3d(double d) {
+  const WendlandC2<3> W(h);
+  const int n = 20000;
+  double s = 0;
+  for (int k = 0; k < n; ++k) {  // midpoint rule, smooth integrand
+    const double r = d + (2 * h - d) * (k + 0.5) / n;
+    s += W.value(r) * 2 * pi * r * (r - d);
+  }
+  return 1 - s * (2 * h - d) / n;
+}
+}  // namespace
+
+TEST(ShepardGeometric3D, FlatWallAndCorner) {
+  const double L = 3.0;
+  const auto plane =
+      rectangle_elements(Vec3d(-L, -L, 0), Vec3d(2 * L, 0, 0), Vec3d(0, 2 * L, 0), dx);
+  EXPECT_NEAR(shepard_geometric<3>(plane, Vec3d(0, 0, 0), h), 0.5, 1e-8);
+  EXPECT_NEAR(shepard_geometric<3>(plane, Vec3d(0.1, 0.25, 0), h), 0.5, 1e-8);
+  EXPECT_NEAR(reference_flat_3d(0.5), 0.827583312988281, 1e-8);
+  EXPECT_NEAR(shepard_geometric<3>(plane, Vec3d(0.1, 0.2, 0.5), h), reference_flat_3d(0.5), 1e-3);
+  EXPECT_NEAR(shepard_geometric<3>(plane, Vec3d(0.0, 0.0, 1.2), h), reference_flat_3d(1.2), 1e-3);
+  EXPECT_NEAR(shepard_geometric<3>(plane, Vec3d(0.0, 0.0, 2.01), h), 1.0, 1e-10);
+
+  // Three faces meeting at the origin, fluid in the positive octant.
+  BoundaryElements<3> corner;
+  corner.append(rectangle_elements(Vec3d(0, 0, 0), Vec3d(L, 0, 0), Vec3d(0, L, 0), dx));
+  corner.append(rectangle_elements(Vec3d(0, 0, 0), Vec3d(0, L, 0), Vec3d(0, 0, L), dx));
+  corner.append(rectangle_elements(Vec3d(0, 0, 0), Vec3d(0, 0, L), Vec3d(L, 0, 0), dx));
+  EXPECT_NEAR(shepard_geometric<3>(corner, Vec3d(0, 0, 0), h), 0.125, 1e-8);
+  // On an edge far from the apex: a 90 degree dihedral, gamma = 1/4.
+  EXPECT_NEAR(shepard_geometric<3>(corner, Vec3d(2.5, 0, 0), h), 0.25, 2e-3);
+  // Triangles give the same as quads on a plane.
+  std::vector<std::array<Vec3d, 3>> tris;
+  for (std::size_t j = 0; j < plane.size(); ++j) {
+    const auto& v = plane.vertices[j];
+    tris.push_back({v[0], v[1], v[2]});
+    tris.push_back({v[0], v[2], v[3]});
+  }
+  EXPECT_NEAR(shepard_geometric<3>(triangle_elements(tris), Vec3d(0.1, 0.2, 0.5), h),
+              reference_flat_3d(0.5), 1e-3);
+}
+
+TEST(ShepardModes, ParseMonolithicVolumeNone) {
+  EXPECT_EQ(shepard_mode_from_string("geometric"), ShepardMode::geometric);
+  EXPECT_EQ(shepard_mode_from_string("volume"), ShepardMode::volume);
+  EXPECT_STREQ(to_string(ShepardMode::monolithic), "monolithic");
+  EXPECT_THROW(shepard_mode_from_string("Geometric"), std::invalid_argument);
+  const auto el = flat_wall();
+  EXPECT_DOUBLE_EQ(shepard_monolithic<2>(el, Vec2d(0, 2.5), h), 1.0);
+  EXPECT_NEAR(shepard_monolithic<2>(el, Vec2d(0.1, 1.0), h), 0.971491, 5e-3);
+  // Volume mode on a lattice: ~1 in the bulk, ~1/2 at the wall.
+  std::vector<Vec2d> pos;
+  std::vector<double> vol;
+  for (int i = -16; i < 16; ++i)
+    for (int j = 0; j < 16; ++j) {
+      pos.emplace_back((i + 0.5) * dx, (j + 0.5) * dx);
+      vol.push_back(dx * dx);
+    }
+  EXPECT_NEAR(shepard_volume<2>(pos, vol, Vec2d(0, 4), h), 1.0, 2e-3);
+  EXPECT_NEAR(shepard_volume<2>(pos, vol, Vec2d(0, 0), h), 0.5, 2e-2);
+  const std::vector<Vec2d> pts{{0, 4}, {0, 0}};
+  const auto g = shepard_factor<2>(ShepardMode::none, el, pts, h);
+  EXPECT_EQ(g, (std::vector<double>{1.0, 1.0}));
+  const auto gg = shepard_factor<2>(ShepardMode::geometric, el, pts, h);
+  EXPECT_NEAR(gg[1], 0.5, 1e-8);
+}

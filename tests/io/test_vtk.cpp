@@ -1,0 +1,221 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <regex>
+
+#include "curvsph/io/pvd_series.hpp"
+#include "curvsph/io/vtk_reader.hpp"
+#include "curvsph/io/vtk_writer.hpp"
+
+namespace fs = std::filesystem;
+using namespace curvsph;
+
+namespace {
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("curvsph_test_vtk_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+template <int D>
+Particles<D> random_particles(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  std::uniform_int_distribution<std::int64_t> ui(std::numeric_limits<std::int64_t>::min(),
+                                                 std::numeric_limits<std::int64_t>::max());
+  Particles<D> p;
+  p.resize(n);
+  p.for_each_field([&](const char*, auto& data) {
+    using T = typename std::decay_t<decltype(data)>::value_type;
+    for (auto& v : data) {
+      if constexpr (std::is_same_v<T, Vec<D>>) {
+        for (int k = 0; k < D; ++k) v[k] = static_cast<Real>(u(rng) * std::exp(u(rng) / 100));
+      } else if constexpr (std::is_floating_point_v<T>) {
+        v = static_cast<T>(u(rng) / 7.0);
+      } else {
+        v = static_cast<T>(ui(rng));
+      }
+    }
+  });
+  return p;
+}
+
+template <int D>
+void expect_bit_equal(const Particles<D>& a, const Particles<D>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  std::vector<std::vector<std::byte>> fa, fb;
+  a.for_each_field([&](const char*, const auto& data) {
+    const auto* p = reinterpret_cast<const std::byte*>(data.data());
+    fa.emplace_back(p, p + data.size() * sizeof(data[0]));
+  });
+  b.for_each_field([&](const char*, const auto& data) {
+    const auto* p = reinterpret_cast<const std::byte*>(data.data());
+    fb.emplace_back(p, p + data.size() * sizeof(data[0]));
+  });
+  ASSERT_EQ(fa.size(), fb.size());
+  for (std::size_t k = 0; k < fa.size(); ++k) EXPECT_TRUE(fa[k] == fb[k]) << "field " << k;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+template <int D>
+void round_trip(std::size_t n, unsigned seed) {
+  const fs::path dir = temp_dir("rt" + std::to_string(D) + "_" + std::to_string(n));
+  const Particles<D> p = random_particles<D>(n, seed);
+  io::write_vtp(dir / "p.vtp", p);
+  const Particles<D> q = io::read_particles<D>(dir / "p.vtp");
+  expect_bit_equal(p, q);
+  // Vectors are 3-component with z = 0 in 2-D.
+  const io::VtkPolyData vtk = io::read_vtp(dir / "p.vtp");
+  const auto& vel = vtk.array("velocity");
+  EXPECT_EQ(vel.components, 3);
+  if constexpr (D == 2) {
+    const auto flat = vel.as<Real>();
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(flat[3 * i + 2], Real(0));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+TEST(VtkRoundTrip, Random2D) {
+  round_trip<2>(1000, 1);
+}
+TEST(VtkRoundTrip, Random3D) {
+  round_trip<3>(777, 2);
+}
+TEST(VtkRoundTrip, EmptyAndSingle) {
+  round_trip<2>(0, 3);
+  round_trip<3>(1, 4);
+}
+
+TEST(VtkXml, HeaderAndArrays) {
+  const fs::path dir = temp_dir("xml");
+  const Particles<3> p = random_particles<3>(17, 5);
+  io::write_vtp(dir / "p.vtp", p);
+  const std::string s = slurp(dir / "p.vtp");
+  const std::string head = s.substr(0, s.find("<AppendedData"));
+  EXPECT_EQ(s.rfind("<?xml version=\"1.0\"?>", 0), 0u);
+  EXPECT_NE(head.find("<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                      "header_type=\"UInt64\">"),
+            std::string::npos);
+  EXPECT_NE(head.find("NumberOfPoints=\"17\""), std::string::npos);
+  EXPECT_NE(head.find("NumberOfVerts=\"17\""), std::string::npos);
+  const std::string real = std::is_same_v<Real, double> ? "Float64" : "Float32";
+  EXPECT_NE(head.find("type=\"" + real + "\" Name=\"velocity\" NumberOfComponents=\"3\""),
+            std::string::npos);
+  EXPECT_NE(head.find("type=\"" + real + "\" Name=\"pressure\" format"), std::string::npos);
+  EXPECT_NE(head.find("type=\"Int32\" Name=\"phase\""), std::string::npos);
+  EXPECT_NE(head.find("type=\"Int64\" Name=\"id\""), std::string::npos);
+  EXPECT_NE(head.find("Name=\"connectivity\""), std::string::npos);
+  EXPECT_NE(head.find("Name=\"offsets\""), std::string::npos);
+  EXPECT_NE(s.find("<AppendedData encoding=\"raw\">\n   _"), std::string::npos);
+  EXPECT_EQ(s.substr(s.size() - 30), "\n  </AppendedData>\n</VTKFile>\n");
+
+  // Tags balance in the XML part (well-formedness of the structure).
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t k = head.find(what); k != std::string::npos; k = head.find(what, k + 1)) ++n;
+    return n;
+  };
+  for (const char* tag : {"PolyData", "Piece", "PointData", "Points", "Verts"}) {
+    EXPECT_EQ(count(std::string("<") + tag + ">") + count(std::string("<") + tag + " "), 1u) << tag;
+    EXPECT_EQ(count(std::string("</") + tag + ">"), 1u) << tag;
+  }
+
+  // Offsets: each block is [UInt64 n][n bytes], consecutive, and the last one ends where the
+  // closing text begins.
+  const std::size_t data0 = s.find('_', s.find("<AppendedData")) + 1;
+  std::vector<std::size_t> offsets;
+  const std::regex off("offset=\"([0-9]+)\"");
+  for (auto it = std::sregex_iterator(head.begin(), head.end(), off); it != std::sregex_iterator();
+       ++it)
+    offsets.push_back(std::stoull((*it)[1]));
+  ASSERT_EQ(offsets.size(), 9u + 1 + 2);  // 9 fields + Points + connectivity + offsets
+  std::size_t expect = 0;
+  for (std::size_t o : offsets) {
+    EXPECT_EQ(o, expect);
+    std::uint64_t nbytes = 0;
+    std::memcpy(&nbytes, s.data() + data0 + o, 8);
+    expect = o + 8 + nbytes;
+  }
+  EXPECT_EQ(data0 + expect, s.size() - 30);
+
+  // Verts connectivity i, offsets i + 1.
+  std::uint64_t nb = 0;
+  std::memcpy(&nb, s.data() + data0 + offsets[10], 8);
+  ASSERT_EQ(nb, 17u * 8);
+  for (std::int64_t i = 0; i < 17; ++i) {
+    std::int64_t c = -1, o = -1;
+    std::memcpy(&c, s.data() + data0 + offsets[10] + 8 + 8 * i, 8);
+    std::memcpy(&o, s.data() + data0 + offsets[11] + 8 + 8 * i, 8);
+    EXPECT_EQ(c, i);
+    EXPECT_EQ(o, i + 1);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(VtkPolyDataBuilder, ExtraArraysAndNames) {
+  const fs::path dir = temp_dir("builder");
+  std::vector<Vec2d> pts{{0, 0}, {1, 2}, {3, -4}};
+  io::VtkPolyData vtk;
+  vtk.set_points(pts);
+  vtk.add_scalar<std::int32_t>("kind", std::vector<std::int32_t>{0, 1, 2});
+  vtk.add_scalar<float>("gamma <&\">", std::vector<float>{0.5f, 0.25f, 1.0f});
+  vtk.add_vector("normal", std::vector<Vec2d>{{0, 1}, {1, 0}, {0.6, 0.8}});
+  vtk.write(dir / "walls.vtp");
+  const io::VtkPolyData back = io::read_vtp(dir / "walls.vtp");
+  EXPECT_EQ(back.number_of_points(), 3u);
+  EXPECT_EQ(back.array("kind").as<std::int32_t>(), (std::vector<std::int32_t>{0, 1, 2}));
+  EXPECT_EQ(back.array("gamma <&\">").as<float>(), (std::vector<float>{0.5f, 0.25f, 1.0f}));
+  EXPECT_EQ(back.array("normal").as<double>(),
+            (std::vector<double>{0, 1, 0, 1, 0, 0, 0.6, 0.8, 0}));
+  EXPECT_EQ(back.points().as<double>(), (std::vector<double>{0, 0, 0, 1, 2, 0, 3, -4, 0}));
+  EXPECT_THROW(back.array("nope"), std::runtime_error);
+  EXPECT_THROW(back.array("kind").as<double>(), std::runtime_error);
+
+  io::VtkPolyData bad;
+  bad.set_points(pts);
+  bad.add_scalar<double>("short", std::vector<double>{1.0});
+  EXPECT_THROW(bad.write(dir / "bad.vtp"), std::runtime_error);
+  EXPECT_THROW(io::read_vtp(dir / "missing.vtp"), std::runtime_error);
+  fs::remove_all(dir);
+}
+
+TEST(VtkPvd, ListsFilesAndTimesAfterEveryOutput) {
+  const fs::path dir = temp_dir("pvd");
+  io::PvdSeries series(dir / "series.pvd");
+  const std::vector<double> times{0.0, 0.1, 0.30000000000000004, 1e-7};
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const std::string name = "particles_" + std::to_string(k) + ".vtp";
+    io::write_vtp(dir / name, random_particles<2>(5, static_cast<unsigned>(k)));
+    series.add(times[k], dir / name);  // absolute path stored relative to the .pvd
+    series.add(times[k], "walls_" + std::to_string(k) + ".vtp", 1);
+    // After every output the file on disk is complete and lists everything so far.
+    const auto entries = io::PvdSeries::read(dir / "series.pvd");
+    ASSERT_EQ(entries.size(), 2 * (k + 1));
+    for (std::size_t j = 0; j <= k; ++j) {
+      EXPECT_EQ(entries[2 * j].time, times[j]);
+      EXPECT_EQ(entries[2 * j].file, "particles_" + std::to_string(j) + ".vtp");
+      EXPECT_EQ(entries[2 * j].part, 0);
+      EXPECT_EQ(entries[2 * j + 1].file, "walls_" + std::to_string(j) + ".vtp");
+      EXPECT_EQ(entries[2 * j + 1].part, 1);
+    }
+    const std::string text = slurp(dir / "series.pvd");
+    EXPECT_NE(text.find("<VTKFile type=\"Collection\""), std::string::npos);
+    EXPECT_NE(text.find("</Collection>\n</VTKFile>"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir / "series.pvd.tmp"));
+  }
+  fs::remove_all(dir);
+}

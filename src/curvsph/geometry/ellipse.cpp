@@ -26,11 +26,13 @@ Vec2d ellipse_foot_first_quadrant(double e0, double e1, double y0, double y1, in
       return -2.0 * (r0 * r0 / (u + d) + r1 * r1 / u);
     };
     // Newton crawls (a factor ~1.5 per step) when started far left of the root, e.g. for
-    // points just off the major axis, so a step that fails to halve the bracket is replaced
-    // by a bisection (geometric while the bracket spans orders of magnitude).
+    // points just off the major axis. A Newton step is kept only while it converges (it is
+    // under half the previous step) or the bracket halved; otherwise bisect (geometrically
+    // while the bracket spans orders of magnitude).
     constexpr double eps = std::numeric_limits<double>::epsilon();
     double u = lo;
     double width = hi - lo;
+    double last_step = std::numeric_limits<double>::infinity();
     for (int it = 0; it < 300; ++it) {
       iterations = it + 1;
       const double f = F(u);
@@ -42,10 +44,12 @@ Vec2d ellipse_foot_first_quadrant(double e0, double e1, double y0, double y1, in
         break;
       if (!(hi - lo > 2.0 * eps * hi)) break;
       double next = u - f / dF(u);
-      const bool newton_ok = next > lo && next < hi && hi - lo <= 0.5 * width;
+      const bool newton_ok = next > lo && next < hi &&
+                             (std::abs(next - u) <= 0.5 * last_step || hi - lo <= 0.5 * width);
       width = hi - lo;
       if (!newton_ok) next = (lo > 0.0 && hi > 4.0 * lo) ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
-      const bool converged = std::abs(next - u) <= 4.0 * eps * u;
+      last_step = std::abs(next - u);
+      const bool converged = last_step <= 4.0 * eps * u;
       u = next;
       if (converged) break;
     }

@@ -19,7 +19,7 @@ WallPoint<3> CylinderWall::closest(const Vec3d& x, const ParamSeed&) const {
   const double c1 = e1_.dot(r), c2 = e2_.dot(r);
   const double rho = std::hypot(c1, c2);
   const double phi = rho > 0.0 ? std::atan2(c2, c1) : 0.0;
-  const Vec3d outward = std::cos(phi) * e1_ + std::sin(phi) * e2_;
+  const Vec3d outward = rho > 0.0 ? Vec3d((c1 * e1_ + c2 * e2_) / rho) : e1_;
   p.foot = point_ + along * axis_ + radius_ * outward;
   // k_inside: 1/R around the circle (dir1), 0 along the axis (dir2).
   apply_side(p, side_, outward, rho - radius_, 1.0 / radius_, 0.0);

@@ -17,7 +17,7 @@ WallPoint<3> SphereWall::closest(const Vec3d& x, const ParamSeed&) const {
   const double theta = rho > 0.0 ? std::atan2(std::hypot(r.x(), r.y()), r.z()) : 0.0;
   const double phi = (r.x() != 0.0 || r.y() != 0.0) ? std::atan2(r.y(), r.x()) : 0.0;
   const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
-  const Vec3d outward(st * cp, st * sp, ct);
+  const Vec3d outward = rho > 0.0 ? Vec3d(r / rho) : Vec3d(0.0, 0.0, 1.0);
   p.foot = center_ + radius_ * outward;
   apply_side(p, side_, outward, rho - radius_, 1.0 / radius_, 1.0 / radius_);
   p.dir1 = Vec3d(ct * cp, ct * sp, -st);

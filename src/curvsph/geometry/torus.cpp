@@ -23,13 +23,15 @@ WallPoint<3> TorusWall::closest(const Vec3d& x, const ParamSeed&) const {
   const double h = axis_.dot(r);
   const double q1 = e1_.dot(r), q2 = e2_.dot(r);
   const double rho = std::hypot(q1, q2);
-  const double phi = rho > 0.0 ? std::atan2(q2, q1) : 0.0;
-  const Vec3d radial = std::cos(phi) * e1_ + std::sin(phi) * e2_;
+  // Directions from normalised vectors rather than cos/sin of atan2: exact to round-off.
+  const Vec3d radial = rho > 0.0 ? Vec3d((q1 * e1_ + q2 * e2_) / rho) : e1_;
   const double delta = std::hypot(rho - major_, h);
-  const double theta = delta > 0.0 ? std::atan2(h, rho - major_) : 0.0;
-  const double ct = std::cos(theta), st = std::sin(theta);
+  const double ct = delta > 0.0 ? (rho - major_) / delta : 1.0;
+  const double st = delta > 0.0 ? h / delta : 0.0;
   const Vec3d outward = ct * radial + st * axis_;
-  p.foot = center_ + (major_ + minor_ * ct) * radial + minor_ * st * axis_;
+  p.foot = center_ + major_ * radial + minor_ * outward;
+  const double phi = rho > 0.0 ? std::atan2(q2, q1) : 0.0;
+  const double theta = std::atan2(st, ct);
   apply_side(p, side_, outward, delta - minor_, 1.0 / minor_, ct / (major_ + minor_ * ct));
   p.dir1 = -st * radial + ct * axis_;  // along the tube's circle
   p.dir2 = axis_.cross(radial);        // along the major circle

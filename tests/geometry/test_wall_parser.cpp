@@ -64,31 +64,30 @@ TEST(GeometryParser, NurbsAndCadSlotsAreMarked) {
 }
 
 TEST(GeometryParser, WrongTypes) {
-  expect_error<2>("[{shape: circle, center: [0, 0], radius: abc, fluid: inside}]",
-                  "walls.0.radius", "expected a finite number, got 'abc'");
-  expect_error<2>("[{shape: circle, center: [0, 0], radius: [1], fluid: inside}]",
-                  "walls.0.radius", "expected a number");
-  expect_error<2>("[{shape: circle, center: [0, x], radius: 1, fluid: inside}]",
-                  "walls.0.center.1", "expected a finite number");
+  expect_error<2>("[{shape: circle, center: [0, 0], radius: abc, fluid: inside}]", "walls.0.radius",
+                  "expected a finite number, got 'abc'");
+  expect_error<2>("[{shape: circle, center: [0, 0], radius: [1], fluid: inside}]", "walls.0.radius",
+                  "expected a number");
+  expect_error<2>("[{shape: circle, center: [0, x], radius: 1, fluid: inside}]", "walls.0.center.1",
+                  "expected a finite number");
   expect_error<2>("[{shape: circle, center: 5, radius: 1, fluid: inside}]", "walls.0.center",
                   "expected a list of 2 numbers");
   expect_error<2>("[{shape: circle, center: [0, 0, 0], radius: 1, fluid: inside}]",
                   "walls.0.center", "expected a list of 2 numbers, got a list of 3");
-  expect_error<3>("[{shape: sphere, center: [0, 0], radius: 1, fluid: inside}]",
-                  "walls.0.center", "expected a list of 3 numbers, got a list of 2");
-  expect_error<2>("[{shape: circle, center: [0, 0], radius: 1, fluid: sideways}]",
-                  "walls.0.fluid", "expected one of inside | outside");
+  expect_error<3>("[{shape: sphere, center: [0, 0], radius: 1, fluid: inside}]", "walls.0.center",
+                  "expected a list of 3 numbers, got a list of 2");
+  expect_error<2>("[{shape: circle, center: [0, 0], radius: 1, fluid: sideways}]", "walls.0.fluid",
+                  "expected one of inside | outside");
   expect_error<2>("[{shape: circle, center: [0, 0], radius: .inf, fluid: inside}]",
                   "walls.0.radius", "finite");
 }
 
 TEST(GeometryParser, InvalidValues) {
-  expect_error<2>("[{shape: circle, center: [0, 0], radius: 0, fluid: inside}]",
-                  "walls.0.radius", "must be > 0");
+  expect_error<2>("[{shape: circle, center: [0, 0], radius: 0, fluid: inside}]", "walls.0.radius",
+                  "must be > 0");
   expect_error<3>("[{shape: sphere, center: [0, 0, 0], radius: -2, fluid: inside}]",
                   "walls.0.radius", "must be > 0");
-  expect_error<2>("[{shape: plane, point: [0, 0], normal: [0, 0]}]", "walls.0.normal",
-                  "non-zero");
+  expect_error<2>("[{shape: plane, point: [0, 0], normal: [0, 0]}]", "walls.0.normal", "non-zero");
   expect_error<3>(
       "[{shape: cylinder, point: [0, 0, 0], axis: [0, 0, 0], radius: 1, fluid: inside}]",
       "walls.0.axis", "non-zero");
@@ -98,8 +97,8 @@ TEST(GeometryParser, InvalidValues) {
       "walls.0.axis", "non-zero");
   expect_error<2>("[{shape: box, min: [0, 1], max: [1, 1], fluid: inside}]", "walls.0.max",
                   "min must be < max");
-  expect_error<3>("[{shape: box, min: [0, 0, 2], max: [1, 1, 1], fluid: outside}]",
-                  "walls.0.max", "axis 2");
+  expect_error<3>("[{shape: box, min: [0, 0, 2], max: [1, 1, 1], fluid: outside}]", "walls.0.max",
+                  "axis 2");
   expect_error<3>(
       "[{shape: torus, center: [0, 0, 0], axis: [0, 0, 1], major_radius: 1, minor_radius: 1, "
       "fluid: outside}]",
@@ -113,8 +112,9 @@ TEST(GeometryParser, MotionErrors) {
                   "unknown key");
   expect_error<2>("[" + kCircle + ", motion: {rotate: {center: [0, 0]}}}]",
                   "walls.0.motion.rotate.omega", "missing key");
-  expect_error<2>("[" + kCircle + ", motion: {rotate: {omega: 1, center: [0, 0], axis: [0, 0, 1]}}}]",
-                  "walls.0.motion.rotate.axis", "unknown key");
+  expect_error<2>(
+      "[" + kCircle + ", motion: {rotate: {omega: 1, center: [0, 0], axis: [0, 0, 1]}}}]",
+      "walls.0.motion.rotate.axis", "unknown key");
   expect_error<2>("[" + kCircle +
                       ", motion: {rotate: {omega: 1, center: [0, 0]}, translate: {velocity: [1, "
                       "0]}}}]",
@@ -187,8 +187,11 @@ TEST(GeometryYamlRead, HelpersNameKeyAndReason) {
          "expected an integer");
   expect([&] { yaml::read_key(n, "flag", "c.yaml", "run", yaml::read_bool); }, "run.flag",
          "expected true or false");
-  expect([&] { yaml::read_choice(n["mode"], {"slow", "exact"}, "c.yaml", "run.mode"); },
-         "run.mode", "expected one of slow | exact, got 'fast'");
+  expect(
+      [&] {
+        yaml::read_choice(n["mode"], {"slow", "exact"}, "c.yaml", "run.mode");
+      },
+      "run.mode", "expected one of slow | exact, got 'fast'");
   expect([&] { yaml::read_numbers(n["list"], "c.yaml", "run.list", 3); }, "run.list",
          "got a list of 2");
   expect([&] { yaml::check_keys(n["m"], {"b"}, "c.yaml", "run.m"); }, "run.m.a",

@@ -19,7 +19,9 @@ namespace {
 constexpr const char* kColumns = "x,y,z,foot_x,foot_y,foot_z,nx,ny,nz,distance,k1,k2,u,v,wall";
 
 // `+ 0.0` prints -0 as 0: the sign of a zero component means nothing here.
-std::string num(double v) { return fmt::format("{:.17g}", v + 0.0); }
+std::string num(double v) {
+  return fmt::format("{:.17g}", v + 0.0);
+}
 
 template <int D>
 void write_rows(const WallSet<D>& walls, const std::vector<VecD<D>>& points, std::ostream& out) {

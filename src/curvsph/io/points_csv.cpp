@@ -80,7 +80,7 @@ std::vector<VecD<D>> parse_points_csv(const std::string& text, const std::string
     points.push_back(p);
   }
   if (!have_header)
-    fail(file, line_no, fmt::format("empty file: expected the header '{}'", header));
+    throw InputError(file, "", fmt::format("empty file: expected the header '{}'", header));
   return points;
 }
 

@@ -9,6 +9,7 @@
 //  - curvatures: k1 >= k2, > 0 where the wall is concave seen from the fluid
 //    (fluid inside a circle of radius R: k = 1/R; fluid outside a cylinder: k = -1/R).
 //    In 2-D only k1 is used and k2 = 0.
+#include <Eigen/Geometry>  // cross(): WallMotion below and the 3-D walls
 #include <array>
 #include <cmath>
 #include <limits>
@@ -28,7 +29,8 @@ struct WallPoint {
   double distance = 0.0;
   double k1 = 0.0;
   double k2 = 0.0;
-  // Principal directions (3-D only; unit tangents for k1 and k2).
+  // Principal directions: in 3-D unit tangents for k1 and k2; in 2-D dir1 is the unit
+  // tangent (direction of increasing u where the wall has a parameter) and dir2 = 0.
   VecD<D> dir1 = VecD<D>::Zero();
   VecD<D> dir2 = VecD<D>::Zero();
   // Surface parameters where the shape has them (u for curves, (u, v) for surfaces).
@@ -51,10 +53,10 @@ struct ParamSeed {
 template <int D>
 struct WallMotion {
   enum class Kind { none, rotate, translate } kind = Kind::none;
-  double omega = 0.0;                          // rotate (2-D: about z; 3-D: about `axis`)
-  VecD<D> center = VecD<D>::Zero();            // rotate
-  VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);       // rotate, 3-D
-  VecD<D> velocity = VecD<D>::Zero();          // translate
+  double omega = 0.0;                     // rotate (2-D: about z; 3-D: about `axis`)
+  VecD<D> center = VecD<D>::Zero();       // rotate
+  VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);  // rotate, 3-D
+  VecD<D> velocity = VecD<D>::Zero();     // translate
   VecD<D> velocity_at(const VecD<D>& x) const;
 };
 

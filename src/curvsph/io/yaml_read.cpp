@@ -1,0 +1,169 @@
+#include "curvsph/io/yaml_read.hpp"
+
+#include <cmath>
+
+#include "curvsph/core/error.hpp"
+
+namespace curvsph::yaml {
+
+std::string join(const std::string& path, std::string_view key) {
+  if (path.empty()) return std::string(key);
+  return path + "." + std::string(key);
+}
+
+std::string join(const std::string& path, std::size_t index) {
+  return join(path, std::to_string(index));
+}
+
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing";
+  if (node.IsSequence()) return "a list of " + std::to_string(node.size());
+  if (node.IsMap()) return "a map";
+  return "'" + node.Scalar() + "'";
+}
+
+void require_map(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  if (!node.IsMap()) throw InputError(file, path, "expected a map, got " + describe(node));
+}
+
+std::size_t require_list(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  if (!node.IsSequence()) throw InputError(file, path, "expected a list, got " + describe(node));
+  return node.size();
+}
+
+namespace {
+template <typename Range>
+void check_keys_impl(const YAML::Node& node, const Range& allowed, const std::string& file,
+                     const std::string& path) {
+  require_map(node, file, path);
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) throw InputError(file, path, "map keys must be plain names");
+    const std::string key = kv.first.Scalar();
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || key == a;
+    if (ok) continue;
+    std::string list;
+    for (const auto& a : allowed) {
+      if (!list.empty()) list += ", ";
+      list += a;
+    }
+    throw InputError(file, join(path, key), "unknown key (allowed here: " + list + ")");
+  }
+}
+}  // namespace
+
+void check_keys(const YAML::Node& node, std::initializer_list<std::string_view> allowed,
+                const std::string& file, const std::string& path) {
+  check_keys_impl(node, allowed, file, path);
+}
+
+void check_keys(const YAML::Node& node, const std::vector<std::string>& allowed,
+                const std::string& file, const std::string& path) {
+  check_keys_impl(node, allowed, file, path);
+}
+
+bool has(const YAML::Node& node, std::string_view key) {
+  if (!node.IsMap()) return false;
+  const YAML::Node c = node[std::string(key)];
+  return c.IsDefined() && !c.IsNull();
+}
+
+YAML::Node child(const YAML::Node& node, std::string_view key, const std::string& file,
+                 const std::string& path) {
+  require_map(node, file, path);
+  if (!has(node, key)) throw InputError(file, join(path, key), "missing key");
+  return node[std::string(key)];
+}
+
+double read_number(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  if (!node.IsScalar()) throw InputError(file, path, "expected a number, got " + describe(node));
+  double v = 0.0;
+  // yaml-cpp's conversion accepts ".inf"/".nan"; a physical input must be finite.
+  if (!YAML::convert<double>::decode(node, v) || !std::isfinite(v))
+    throw InputError(file, path, "expected a finite number, got " + describe(node));
+  return v;
+}
+
+double read_positive(const YAML::Node& node, const std::string& file, const std::string& path) {
+  const double v = read_number(node, file, path);
+  if (!(v > 0.0)) throw InputError(file, path, "must be > 0, got " + node.Scalar());
+  return v;
+}
+
+double read_nonnegative(const YAML::Node& node, const std::string& file, const std::string& path) {
+  const double v = read_number(node, file, path);
+  if (v < 0.0) throw InputError(file, path, "must be >= 0, got " + node.Scalar());
+  return v;
+}
+
+long read_integer(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  long v = 0;
+  if (!node.IsScalar() || !YAML::convert<long>::decode(node, v))
+    throw InputError(file, path, "expected an integer, got " + describe(node));
+  return v;
+}
+
+bool read_bool(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  bool v = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, v))
+    throw InputError(file, path, "expected true or false, got " + describe(node));
+  return v;
+}
+
+std::string read_string(const YAML::Node& node, const std::string& file, const std::string& path) {
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  if (!node.IsScalar()) throw InputError(file, path, "expected a string, got " + describe(node));
+  return node.Scalar();
+}
+
+std::string read_choice(const YAML::Node& node, std::initializer_list<std::string_view> choices,
+                        const std::string& file, const std::string& path) {
+  const std::string v = read_string(node, file, path);
+  std::string list;
+  for (const auto& c : choices) {
+    if (v == c) return v;
+    if (!list.empty()) list += " | ";
+    list += c;
+  }
+  throw InputError(file, path, "expected one of " + list + ", got '" + v + "'");
+}
+
+std::vector<double> read_numbers(const YAML::Node& node, const std::string& file,
+                                 const std::string& path, std::optional<std::size_t> count) {
+  const std::string want =
+      count ? "a list of " + std::to_string(*count) + " numbers" : std::string("a list of numbers");
+  if (!node.IsDefined() || node.IsNull()) throw InputError(file, path, "missing key");
+  if (!node.IsSequence())
+    throw InputError(file, path, "expected " + want + ", got " + describe(node));
+  if (count && node.size() != *count)
+    throw InputError(file, path,
+                     "expected " + want + ", got a list of " + std::to_string(node.size()));
+  std::vector<double> out;
+  out.reserve(node.size());
+  for (std::size_t i = 0; i < node.size(); ++i)
+    out.push_back(read_number(node[i], file, join(path, i)));
+  return out;
+}
+
+void throw_zero_vector(const std::string& file, const std::string& path) {
+  throw InputError(file, path, "must be a non-zero vector");
+}
+
+YAML::Node load_file(const std::string& file) {
+  try {
+    return YAML::LoadFile(file);
+  } catch (const YAML::BadFile&) {
+    throw InputError(file, "", "cannot open file");
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file, "",
+                     "YAML syntax error at line " + std::to_string(e.mark.line + 1) + ", column " +
+                         std::to_string(e.mark.column + 1) + ": " + e.msg);
+  }
+}
+
+}  // namespace curvsph::yaml

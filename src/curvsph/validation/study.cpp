@@ -1,0 +1,41 @@
+#include "curvsph/validation/study.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+namespace curvsph {
+
+void write_study_outputs(const StudyContext& ctx, const StudyResult& r) {
+  std::filesystem::create_directories(ctx.out_dir);
+  std::ofstream(ctx.out_dir / "metrics.json") << r.metrics.dump(2) << '\n';
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& s : r.summary)
+    rows.push_back({{"figure", s.figure},
+                    {"value", s.value},
+                    {"target", s.target},
+                    {"reference", s.reference},
+                    {"pass", s.pass}});
+  std::ofstream(ctx.out_dir / "summary.json") << rows.dump(2) << '\n';
+}
+
+void run_plot_script(const StudyContext& ctx, const std::string& script,
+                     const std::vector<std::string>& args) {
+  const auto path = ctx.source_dir / "scripts" / script;
+  std::string cmd = "/usr/bin/python3 '" + path.string() + "'";
+  for (const auto& a : args) cmd += " '" + a + "'";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) std::cerr << "warning: plotting failed (" << cmd << "), exit " << rc << "\n";
+}
+
+std::string summary_markdown(const std::vector<SummaryRow>& rows) {
+  std::string s = "| figure | measured | target | reference | |\n|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    s += fmt::format("| `{}` | {:.4g} | {} | {} | {} |\n", r.figure, r.value, r.target,
+                     r.reference, r.pass ? "pass" : "**miss**");
+  return s;
+}
+
+}  // namespace curvsph

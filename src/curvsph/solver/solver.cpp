@@ -148,7 +148,7 @@ void Solver<D>::step(Real dt_cap) {
   if (case_.shifting > 0) {
     Stopwatch sw{times_.integrate};
     shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
-                    shift_);
+                    shift_, shift_drho_, shift_dv_);
   }
   t_ += dt_;
   ++steps_;

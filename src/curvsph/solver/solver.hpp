@@ -59,7 +59,8 @@ class Solver {
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
   std::vector<Real> rho_half_;
-  std::vector<Vec<D>> shift_;
+  std::vector<Vec<D>> shift_, shift_dv_;
+  std::vector<Real> shift_drho_;
   std::vector<std::size_t> order_;
   Real t_ = 0, dt_ = 0;
   long steps_ = 0;

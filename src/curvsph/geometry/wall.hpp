@@ -51,10 +51,10 @@ struct ParamSeed {
 template <int D>
 struct WallMotion {
   enum class Kind { none, rotate, translate } kind = Kind::none;
-  double omega = 0.0;                          // rotate (2-D: about z; 3-D: about `axis`)
-  VecD<D> center = VecD<D>::Zero();            // rotate
-  VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);       // rotate, 3-D
-  VecD<D> velocity = VecD<D>::Zero();          // translate
+  double omega = 0.0;                     // rotate (2-D: about z; 3-D: about `axis`)
+  VecD<D> center = VecD<D>::Zero();       // rotate
+  VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);  // rotate, 3-D
+  VecD<D> velocity = VecD<D>::Zero();     // translate
   VecD<D> velocity_at(const VecD<D>& x) const;
 };
 

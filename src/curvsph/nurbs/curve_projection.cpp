@@ -96,21 +96,37 @@ void CurveProjector<D>::search(const VecD<D>& x, double tol, Best& best) const {
   heap.clear();
   pool.clear();
   const auto cmp = [](const Node& l, const Node& r) { return l.lb > r.lb; };
-  // Lower bound on the distance from x to a Bezier piece (see projection.hpp).
+  // Lower bound on the distance from x to a Bezier piece (see projection.hpp): the larger of
+  // the distances from x to the piece's box in world axes and in the frame of the current
+  // foot (axis 0 along n = (x - foot)/d, where x sits at (d, 0, ..)).
+  Eigen::Matrix<double, D, D> frame;
+  const auto set_frame = [&] {
+    const VecD<D> nrm = (x - best.foot) / best.dist;
+    frame.row(0) = nrm.transpose();
+    if constexpr (D == 2) {
+      frame.row(1) << -nrm.y(), nrm.x();
+    } else {
+      const VecD<D> t1 =
+          (std::abs(nrm.x()) < 0.9 ? VecD<D>::UnitX() : VecD<D>::UnitY()).cross(nrm).normalized();
+      frame.row(1) = t1.transpose();
+      frame.row(2) = nrm.cross(t1).transpose();
+    }
+  };
+  double frame_dist = -1.0;  // best.dist the frame was built for
   const auto bound = [&](const HPoint* P, double& diag) {
-    Aabb<D> box;
-    double dir = -std::numeric_limits<double>::infinity();
-    const bool have_dir = std::isfinite(best.dist) && best.dist > 0.0;
-    const VecD<D> nrm = have_dir ? VecD<D>((x - best.foot) / best.dist) : VecD<D>::Zero();
-    double dmin = std::numeric_limits<double>::infinity();
+    Aabb<D> box, fbox;
+    const bool have_frame = std::isfinite(best.dist) && best.dist > 0.0;
+    if (have_frame && frame_dist != best.dist) set_frame(), frame_dist = best.dist;
     for (int i = 0; i < n; ++i) {
       const VecD<D> q = P[i].template head<D>() / P[i][D];
       box.extend(q);
-      dmin = std::min(dmin, (x - q).dot(nrm));
+      if (have_frame) fbox.extend(VecD<D>(frame * (q - best.foot)));
     }
-    if (have_dir) dir = dmin;
     diag = box.diagonal();
-    return std::max(box.distance(x), dir);
+    if (!have_frame) return box.distance(x);
+    VecD<D> xf = VecD<D>::Zero();
+    xf[0] = best.dist;
+    return std::max(box.distance(x), fbox.distance(xf));
   };
   const auto push = [&](const HPoint* P, double a, double b, int depth) {
     double diag;

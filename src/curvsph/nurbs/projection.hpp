@@ -8,12 +8,15 @@
 //
 // Certificate and fallback: the curve/surface is cut once into rational Bezier pieces whose
 // control points bound them (convex hull, weights > 0), kept in a BVH. A point at distance d
-// is the global minimum within tol when every piece has a lower bound >= d - tol. Two lower
-// bounds, both cheap: the distance to the piece's box, and the directional bound
-// min_i (x - P_i).n with n = (x - foot)/d (the hull cannot be nearer than its nearest
-// vertex along n). The second one settles the piece under the foot at once when the wall
-// bends away from x; otherwise pieces are halved (de Casteljau) best-first until they are
-// pruned or smaller than tol (branch and bound), and any better point found is polished by
+// is the global minimum within tol when every piece has a lower bound >= d - tol. The bound
+// is the larger of two box distances: to the piece's box in world axes, and to its box in
+// the frame of the current foot f with axis 0 along n = (x - f)/d. In that frame
+// |x - y|^2 = (d - a)^2 + |t|^2 exactly (a, t: normal and tangential coordinates of y), so the
+// frame box is tight where it matters: the piece under the foot is settled at once when the
+// wall bends away from x, and pieces beside the foot are pruned by their tangential offset
+// even where the wall bends toward x. Pieces still in play are halved (de Casteljau)
+// best-first until pruned or smaller than tol (branch and bound); a better point found is
+// polished by
 // Newton. Without a seed the same search runs from scratch. So the answer is always the
 // global minimum within tol; the seeded path does a few box tests and no allocation.
 #include <vector>

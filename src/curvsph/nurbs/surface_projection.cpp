@@ -130,18 +130,30 @@ void SurfaceProjector::search(const Vec3d& x, double tol, Best& best) const {
   pool.clear();
   const auto cmp = [](const Node& l, const Node& r) { return l.lb > r.lb; };
   const auto cart = [](const H4& h) { return Vec3d(h.head<3>() / h[3]); };
+  // Lower bound: the larger of the distances from x to the patch's box in world axes and in
+  // the frame of the current foot (axis 0 along n = (x - foot)/d; x sits at (d, 0, 0)).
+  Eigen::Matrix3d frame;
+  double frame_dist = -1.0;
   const auto bound = [&](const H4* P, double& diag) {
-    Aabb<3> box;
-    const bool have_dir = std::isfinite(best.dist) && best.dist > 0.0;
-    const Vec3d nrm = have_dir ? Vec3d((x - best.foot) / best.dist) : Vec3d::Zero();
-    double dmin = std::numeric_limits<double>::infinity();
+    Aabb<3> box, fbox;
+    const bool have_frame = std::isfinite(best.dist) && best.dist > 0.0;
+    if (have_frame && frame_dist != best.dist) {
+      const Vec3d nrm = (x - best.foot) / best.dist;
+      const Vec3d t1 =
+          (std::abs(nrm.x()) < 0.9 ? Vec3d::UnitX() : Vec3d::UnitY()).cross(nrm).normalized();
+      frame.row(0) = nrm.transpose();
+      frame.row(1) = t1.transpose();
+      frame.row(2) = nrm.cross(t1).transpose();
+      frame_dist = best.dist;
+    }
     for (int i = 0; i < n; ++i) {
       const Vec3d c = cart(P[i]);
       box.extend(c);
-      dmin = std::min(dmin, (x - c).dot(nrm));
+      if (have_frame) fbox.extend(Vec3d(frame * (c - best.foot)));
     }
     diag = box.diagonal();
-    return have_dir ? std::max(box.distance(x), dmin) : box.distance(x);
+    if (!have_frame) return box.distance(x);
+    return std::max(box.distance(x), fbox.distance(Vec3d(best.dist, 0.0, 0.0)));
   };
   const auto push = [&](const H4* P, const double a[2], const double b[2], int depth) {
     double diag;

@@ -15,6 +15,7 @@ struct CurveProjector<D>::Best {
   double t = 0.0;
   VecD<D> foot = VecD<D>::Zero();
   bool from_newton = false;
+  double gap = 0.0;
   void offer(const VecD<D>& x, const VecD<D>& p, double t_p, bool newton) {
     const double d = (x - p).norm();
     if (d < dist) {
@@ -148,11 +149,19 @@ void CurveProjector<D>::search(const VecD<D>& x, double tol, Best& best) const {
         push(P, g.a, g.b, 0);
       });
   HPoint left[kMaxOrder], right[kMaxOrder], cur[kMaxOrder];
+  int expansions = 0;
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end(), cmp);
     const Node node = heap.back();
     heap.pop_back();
-    if (node.lb >= best.dist - tol) break;  // best-first: nothing left can be nearer
+    if (node.lb >= best.dist - tol) break;
+    if (++expansions > kSearchBudget) {
+      // Nearly equidistant points everywhere (x on a cylinder's axis, at a circle's centre):
+      // hull bounds close in only quadratically there. Stop and report how much nearer an
+      // unexplored point could at most be (best-first: node.lb is the smallest bound left).
+      best.gap = best.dist - node.lb;
+      break;
+    }  // best-first: nothing left can be nearer
     std::copy(pool.begin() + node.off, pool.begin() + node.off + n, cur);
     double diag;
     if (bound(cur, diag) >= best.dist - tol) continue;  // best improved since the push
@@ -193,6 +202,7 @@ Projection CurveProjector<D>::project(const VecD<D>& x, const double* seed_t, do
   const double seeded = best.dist;
   search(x, tol, best);
   out.searched = best.dist < seeded;
+  out.gap = best.gap;
   if (!best.from_newton) {
     // The search ended on a Bezier end or split point: polish it.
     int it = 0;

@@ -32,7 +32,13 @@ struct Projection {
   double distance = 0.0;  // unsigned Euclidean distance |x - foot|
   int iterations = 0;     // Newton iterations of the seeded path
   bool searched = false;  // the global search changed the seeded answer (or had no seed)
+  // 0 when certified (no point nearer than distance - tol). Only when a continuum of nearly
+  // equidistant points exhausts the search budget: at most this much nearer elsewhere.
+  double gap = 0.0;
 };
+
+// Bezier pieces the certificate may split per query before it settles for a bound (`gap`).
+inline constexpr int kSearchBudget = 3000;
 
 template <int D>
 class CurveProjector {

@@ -16,6 +16,7 @@ struct SurfaceProjector::Best {
   double u = 0.0, v = 0.0;
   Vec3d foot = Vec3d::Zero();
   bool from_newton = false;
+  double gap = 0.0;
   void offer(const Vec3d& x, const Vec3d& p, double pu, double pv, bool newton) {
     const double d = (x - p).norm();
     if (d < dist) {
@@ -182,11 +183,19 @@ void SurfaceProjector::search(const Vec3d& x, double tol, Best& best) const {
   cur.resize(n);
   left.resize(n);
   right.resize(n);
+  int expansions = 0;
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end(), cmp);
     const Node node = heap.back();
     heap.pop_back();
     if (node.lb >= best.dist - tol) break;
+    if (++expansions > kSearchBudget) {
+      // Nearly equidistant points everywhere (x on a cylinder's axis, at a circle's centre):
+      // hull bounds close in only quadratically there. Stop and report how much nearer an
+      // unexplored point could at most be (best-first: node.lb is the smallest bound left).
+      best.gap = best.dist - node.lb;
+      break;
+    }
     std::copy(pool.begin() + node.off, pool.begin() + node.off + n, cur.begin());
     double diag;
     if (bound(cur.data(), diag) >= best.dist - tol) continue;
@@ -242,6 +251,7 @@ Projection SurfaceProjector::project(const Vec3d& x, const double* seed_uv, doub
   const double seeded = best.dist;
   search(x, tol, best);
   out.searched = best.dist < seeded;
+  out.gap = best.gap;
   if (!best.from_newton) {
     int it = 0;
     double u = best.u, v = best.v;

@@ -17,6 +17,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <UnitsMethods.hxx>
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -36,6 +37,13 @@ std::string lower_ext(const std::string& path) {
 }
 
 namespace {
+
+// OCCT converts lengths from the unit the file declares to the session unit; make that
+// the metre (both the XSTEP parameter and the session value, as OCCT 7.6 reads either).
+void set_session_unit_metre() {
+  Interface_Static::SetCVal("xstep.cascade.unit", "M");
+  UnitsMethods::SetCasCadeLengthUnit(1000.0);  // in millimetres
+}
 
 const char* surface_type_name(GeomAbs_SurfaceType t) {
   switch (t) {
@@ -110,14 +118,14 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
   TopoDS_Shape shape;
   if (ext == ".step" || ext == ".stp") {
     STEPControl_Reader reader;  // registers the STEP statics before they are set
-    Interface_Static::SetCVal("xstep.cascade.unit", "M");
+    set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read STEP file '{}'", path));
     reader.TransferRoots();
     shape = reader.OneShape();
   } else if (ext == ".iges" || ext == ".igs") {
     IGESControl_Reader reader;
-    Interface_Static::SetCVal("xstep.cascade.unit", "M");
+    set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read IGES file '{}'", path));
     reader.TransferRoots();

@@ -1,0 +1,222 @@
+#include "curvsph/cad/cad_import.hpp"
+
+#include <fmt/format.h>
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Interface_Static.hxx>
+#include <Poly_Triangulation.hxx>
+#include <RWStl.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <UnitsMethods.hxx>
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "curvsph/cad/trimmed_face_wall.hpp"
+#include "curvsph/core/error.hpp"
+#include "curvsph/geometry/trimesh_wall.hpp"
+#include "curvsph/nurbs/yaml_input.hpp"
+
+namespace curvsph {
+namespace cad {
+
+std::string lower_ext(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e;
+}
+
+namespace {
+
+// OCCT converts lengths from the unit the file declares to the session unit; make that
+// the metre (both the XSTEP parameter and the session value, as OCCT 7.6 reads either).
+void set_session_unit_metre() {
+  Interface_Static::SetCVal("xstep.cascade.unit", "M");
+  UnitsMethods::SetCasCadeLengthUnit(1000.0);  // in millimetres
+}
+
+const char* surface_type_name(GeomAbs_SurfaceType t) {
+  switch (t) {
+    case GeomAbs_Plane:
+      return "plane";
+    case GeomAbs_Cylinder:
+      return "cylinder";
+    case GeomAbs_Cone:
+      return "cone";
+    case GeomAbs_Sphere:
+      return "sphere";
+    case GeomAbs_Torus:
+      return "torus";
+    case GeomAbs_BezierSurface:
+      return "bezier";
+    case GeomAbs_BSplineSurface:
+      return "bspline";
+    case GeomAbs_SurfaceOfRevolution:
+      return "revolution";
+    case GeomAbs_SurfaceOfExtrusion:
+      return "extrusion";
+    case GeomAbs_OffsetSurface:
+      return "offset";
+    default:
+      return "other";
+  }
+}
+
+// The face's surface as a NURBS surface over its parameter bounds, scaled to metres.
+nurbs::NurbsSurface to_nurbs(const TopoDS_Face& face, double scale) {
+  Handle(Geom_Surface) s = BRep_Tool::Surface(face);  // location applied
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(s);
+  if (b.IsNull()) {
+    // Planes, cylinders, tori... are unbounded or periodic: trim to the face's box first.
+    Handle(Geom_RectangularTrimmedSurface) t =
+        new Geom_RectangularTrimmedSurface(s, u0, u1, v0, v1);
+    b = GeomConvert::SurfaceToBSplineSurface(t);
+  }
+  const auto flat = [](const TColStd_Array1OfReal& k, const TColStd_Array1OfInteger& m) {
+    std::vector<double> out;
+    for (int i = k.Lower(); i <= k.Upper(); ++i)
+      for (int r = 0; r < m(i); ++r) out.push_back(k(i));
+    return out;
+  };
+  if (b->IsUPeriodic()) b->SetUNotPeriodic();  // clamped knots for our evaluator
+  if (b->IsVPeriodic()) b->SetVNotPeriodic();
+  std::vector<std::vector<Vec3d>> P(b->NbUPoles(), std::vector<Vec3d>(b->NbVPoles()));
+  std::vector<std::vector<double>> W(b->NbUPoles(), std::vector<double>(b->NbVPoles()));
+  for (int i = 1; i <= b->NbUPoles(); ++i)
+    for (int j = 1; j <= b->NbVPoles(); ++j) {
+      const gp_Pnt p = b->Pole(i, j);
+      P[i - 1][j - 1] = scale * Vec3d(p.X(), p.Y(), p.Z());
+      W[i - 1][j - 1] = b->Weight(i, j);
+    }
+  TColStd_Array1OfReal ku(1, b->NbUKnots()), kv(1, b->NbVKnots());
+  TColStd_Array1OfInteger mu(1, b->NbUKnots()), mv(1, b->NbVKnots());
+  b->UKnots(ku);
+  b->VKnots(kv);
+  b->UMultiplicities(mu);
+  b->VMultiplicities(mv);
+  return nurbs::NurbsSurface(b->UDegree(), b->VDegree(), P, W, flat(ku, mu), flat(kv, mv));
+}
+
+}  // namespace
+
+TopoDS_Shape read_brep(const std::string& path, const std::string& file, const std::string& key) {
+  const std::string ext = lower_ext(path);
+  if (!std::filesystem::exists(path))
+    throw InputError(file, key, fmt::format("CAD file '{}' not found", path));
+  TopoDS_Shape shape;
+  if (ext == ".step" || ext == ".stp") {
+    STEPControl_Reader reader;  // registers the STEP statics before they are set
+    set_session_unit_metre();
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+      throw InputError(file, key, fmt::format("cannot read STEP file '{}'", path));
+    reader.TransferRoots();
+    shape = reader.OneShape();
+  } else if (ext == ".iges" || ext == ".igs") {
+    IGESControl_Reader reader;
+    set_session_unit_metre();
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+      throw InputError(file, key, fmt::format("cannot read IGES file '{}'", path));
+    reader.TransferRoots();
+    shape = reader.OneShape();
+  } else {
+    throw InputError(file, key, fmt::format("unknown CAD file type '{}' (step, iges, stl)", ext));
+  }
+  if (shape.IsNull()) throw InputError(file, key, fmt::format("no shape in '{}'", path));
+  return shape;
+}
+
+std::vector<WallPtr<3>> faces_to_walls(const TopoDS_Shape& shape, FluidSide side, double scale,
+                                       const std::vector<int>& faces) {
+  std::vector<WallPtr<3>> walls;
+  int index = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next(), ++index) {
+    if (!faces.empty() && std::find(faces.begin(), faces.end(), index) == faces.end()) continue;
+    const TopoDS_Face face = TopoDS::Face(ex.Current());
+    // Outward (material) normal = Su x Sv, flipped on reversed faces; fluid inside the
+    // solid wants the opposite.
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    const bool front = reversed == (side == FluidSide::inside);
+    GeomAdaptor_Surface ad(BRep_Tool::Surface(face));
+    auto sw = std::make_shared<NurbsSurfaceWall>(
+        to_nurbs(face, scale),
+        front ? NurbsSurfaceWall::Side::front : NurbsSurfaceWall::Side::back);
+    const std::string label = fmt::format("face {} ({})", index, surface_type_name(ad.GetType()));
+    sw->set_label(label);
+    walls.push_back(std::make_shared<TrimmedFaceWall>(sw, face, scale, label));
+  }
+  return walls;
+}
+
+std::string describe_shape(const TopoDS_Shape& shape) {
+  std::map<std::string, int> count;
+  int n = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next(), ++n)
+    ++count[surface_type_name(
+        GeomAdaptor_Surface(BRep_Tool::Surface(TopoDS::Face(ex.Current()))).GetType())];
+  std::string s = fmt::format("{} faces:", n);
+  for (const auto& [k, v] : count) s += fmt::format(" {} {}", v, k);
+  return s;
+}
+
+}  // namespace cad
+
+std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string& file,
+                                       const std::string& key_prefix, const std::string& base_dir) {
+  using namespace nurbs::yaml;
+  const nurbs::InputContext ctx{file, key_prefix};
+  reject_unknown_keys(node, {"shape", "file", "fluid", "scale", "faces", "motion", "name"}, ctx);
+  const YAML::Node fn = require(node, "file", ctx);
+  if (!fn.IsScalar()) throw InputError(file, ctx.key("file"), "expected a file name");
+  std::filesystem::path path(fn.as<std::string>());
+  if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
+  const std::string side = read_choice(node, "fluid", {"inside", "outside"}, ctx);
+  double scale = 1.0;
+  if (node["scale"]) scale = read_double(node["scale"], "scale", ctx);
+  if (!(scale > 0.0)) throw InputError(file, ctx.key("scale"), "scale must be > 0");
+  std::vector<int> faces;
+  if (node["faces"])
+    for (double f : read_doubles(node["faces"], "faces", ctx)) faces.push_back(static_cast<int>(f));
+  const cad::FluidSide fs = side == "inside" ? cad::FluidSide::inside : cad::FluidSide::outside;
+  if (cad::lower_ext(path.string()) == ".stl") {
+    // STL has no unit: read as metres (times `scale`).
+    if (!std::filesystem::exists(path))
+      throw InputError(file, ctx.key("file"),
+                       fmt::format("CAD file '{}' not found", path.string()));
+    Handle(Poly_Triangulation) tri = RWStl::ReadFile(path.string().c_str());
+    if (tri.IsNull() || tri->NbTriangles() == 0)
+      throw InputError(file, ctx.key("file"),
+                       fmt::format("cannot read STL file '{}'", path.string()));
+    std::vector<Vec3d> v(tri->NbNodes());
+    for (int i = 1; i <= tri->NbNodes(); ++i) {
+      const gp_Pnt p = tri->Node(i);
+      v[i - 1] = scale * Vec3d(p.X(), p.Y(), p.Z());
+    }
+    std::vector<std::array<int, 3>> t(tri->NbTriangles());
+    for (int i = 1; i <= tri->NbTriangles(); ++i) {
+      int a, b, c;
+      tri->Triangle(i).Get(a, b, c);
+      t[i - 1] = {a - 1, b - 1, c - 1};
+    }
+    return {std::make_shared<TriMeshWall>(
+        std::move(v), std::move(t),
+        fs == cad::FluidSide::inside ? TriMeshWall::Side::inside : TriMeshWall::Side::outside)};
+  }
+  const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
+  std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
+  if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
+  return walls;
+}
+
+}  // namespace curvsph

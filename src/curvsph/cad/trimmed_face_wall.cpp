@@ -1,0 +1,86 @@
+#include "curvsph/cad/trimmed_face_wall.hpp"
+
+#include <BRepClass_FaceClassifier.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <cmath>
+#include <limits>
+
+namespace curvsph::cad {
+
+struct TrimmedFaceWall::Occ {
+  TopoDS_Face face;
+  Handle(ShapeAnalysis_Surface) analysis;  // UV of a 3-D point on the face's own surface
+  struct Edge {
+    Handle(Geom_Curve) curve;
+    double first, last;
+  };
+  std::vector<Edge> edges;
+  std::vector<gp_Pnt> vertices;
+  double tol;
+};
+
+TrimmedFaceWall::TrimmedFaceWall(std::shared_ptr<const NurbsSurfaceWall> surface,
+                                 const TopoDS_Face& face, double scale, std::string label)
+    : surf_(std::move(surface)),
+      occ_(std::make_unique<Occ>()),
+      scale_(scale),
+      label_(std::move(label)) {
+  occ_->face = face;
+  occ_->analysis = new ShapeAnalysis_Surface(BRep_Tool::Surface(face));
+  occ_->tol = std::max(BRep_Tool::Tolerance(face), 1e-9);
+  for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+    const TopoDS_Edge e = TopoDS::Edge(ex.Current());
+    double f, l;
+    Handle(Geom_Curve) c = BRep_Tool::Curve(e, f, l);
+    if (!c.IsNull()) occ_->edges.push_back({c, f, l});
+    TopoDS_Vertex v1, v2;
+    TopExp::Vertices(e, v1, v2);
+    if (!v1.IsNull()) occ_->vertices.push_back(BRep_Tool::Pnt(v1));
+    if (!v2.IsNull()) occ_->vertices.push_back(BRep_Tool::Pnt(v2));
+  }
+}
+
+TrimmedFaceWall::~TrimmedFaceWall() = default;
+
+WallPoint<3> TrimmedFaceWall::closest(const Vec3d& x, const ParamSeed& seed) const {
+  WallPoint<3> w = surf_->closest(x, seed);
+  // Trimming test in the face's own parameter space (the converted NURBS may be
+  // parametrised differently, e.g. rational arcs of a cylinder).
+  const gp_Pnt foot(w.foot.x() / scale_, w.foot.y() / scale_, w.foot.z() / scale_);
+  const gp_Pnt2d uv = occ_->analysis->ValueOfUV(foot, occ_->tol);
+  BRepClass_FaceClassifier cls(occ_->face, uv, occ_->tol);
+  if (cls.State() != TopAbs_OUT) return w;
+  // Outside the trimmed face: the nearest point of its boundary (edges and vertices).
+  const gp_Pnt xp(x.x() / scale_, x.y() / scale_, x.z() / scale_);
+  double best = std::numeric_limits<double>::infinity();
+  gp_Pnt best_p;
+  for (const gp_Pnt& v : occ_->vertices)
+    if (xp.Distance(v) < best) best = xp.Distance(v), best_p = v;
+  for (const auto& e : occ_->edges) {
+    GeomAPI_ProjectPointOnCurve proj(xp, e.curve, e.first, e.last);
+    if (proj.NbPoints() > 0 && proj.LowerDistance() < best)
+      best = proj.LowerDistance(), best_p = proj.NearestPoint();
+  }
+  const Vec3d edge_foot = scale_ * Vec3d(best_p.X(), best_p.Y(), best_p.Z());
+  // Surface data (normal, curvatures) at the edge point: its NURBS parameters by a seeded
+  // projection of the edge point itself (distance ~0, so a couple of Newton steps).
+  const WallPoint<3> on = surf_->closest(edge_foot, seed);
+  WallPoint<3> r = surf_->at(on.param[0], on.param[1], x);
+  r.foot = edge_foot;
+  const Vec3d d = x - edge_foot;
+  r.distance = std::copysign(d.norm(), d.dot(r.normal));
+  r.iterations = w.iterations + on.iterations;
+  return r;
+}
+
+}  // namespace curvsph::cad

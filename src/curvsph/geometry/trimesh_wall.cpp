@@ -1,0 +1,110 @@
+#include "curvsph/geometry/trimesh_wall.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace curvsph {
+namespace {
+
+// Closest point on triangle abc to p by its Voronoi regions (barycentric tests on the
+// vertex, edge and face regions). feature: 0..2 vertex, 3..5 edge (i, i+1), 6 face.
+Vec3d closest_on_triangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c,
+                          int& feature) {
+  const Vec3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return feature = 0, a;
+  const Vec3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return feature = 1, b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return feature = 3, Vec3d(a + d1 / (d1 - d3) * ab);
+  const Vec3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return feature = 2, c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return feature = 5, Vec3d(a + d2 / (d2 - d6) * ac);
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return feature = 4, Vec3d(b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b));
+  const double den = 1.0 / (va + vb + vc);
+  feature = 6;
+  return a + ab * (vb * den) + ac * (vc * den);
+}
+
+}  // namespace
+
+TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int, 3>> triangles,
+                         Side fluid)
+    : v_(std::move(vertices)),
+      tris_(std::move(triangles)),
+      sign_(fluid == Side::outside ? 1.0 : -1.0) {
+  face_n_.resize(tris_.size());
+  vert_n_.assign(v_.size(), Vec3d::Zero());
+  edge_n_.resize(tris_.size());
+  std::map<std::pair<int, int>, Vec3d> edge_sum;
+  std::vector<Aabb<3>> boxes(tris_.size());
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    const auto& T = tris_[t];
+    const Vec3d n = (v_[T[1]] - v_[T[0]]).cross(v_[T[2]] - v_[T[0]]);
+    face_n_[t] = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitZ();
+    for (int i = 0; i < 3; ++i) {
+      const Vec3d e1 = (v_[T[(i + 1) % 3]] - v_[T[i]]).normalized();
+      const Vec3d e2 = (v_[T[(i + 2) % 3]] - v_[T[i]]).normalized();
+      vert_n_[T[i]] += std::acos(std::clamp(e1.dot(e2), -1.0, 1.0)) * face_n_[t];
+      const auto key = std::minmax(T[i], T[(i + 1) % 3]);
+      edge_sum[{key.first, key.second}] += face_n_[t];
+      boxes[t].extend(v_[T[i]]);
+    }
+  }
+  for (std::size_t t = 0; t < tris_.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const auto key = std::minmax(tris_[t][i], tris_[t][(i + 1) % 3]);
+      edge_n_[t][i] = edge_sum[{key.first, key.second}];
+    }
+  bvh_.build(boxes, 4);
+}
+
+WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
+  double best = std::numeric_limits<double>::infinity();
+  int best_t = -1, best_f = 6;
+  Vec3d foot = Vec3d::Zero();
+  bvh_.visit(
+      x, [&] { return best; },
+      [&](int t) {
+        const auto& T = tris_[t];
+        int f;
+        const Vec3d q = closest_on_triangle(x, v_[T[0]], v_[T[1]], v_[T[2]], f);
+        const double d = (q - x).norm();
+        if (d < best) best = d, best_t = t, best_f = f, foot = q;
+      });
+  WallPoint<3> w;
+  if (best_t < 0) return w;
+  const auto& T = tris_[best_t];
+  Vec3d pseudo = best_f == 6  ? face_n_[best_t]
+                 : best_f < 3 ? vert_n_[T[best_f]]
+                              : edge_n_[best_t][best_f - 3];
+  pseudo = sign_ * pseudo.normalized();
+  w.foot = foot;
+  w.normal = pseudo;
+  w.distance = std::copysign(best, (x - foot).dot(pseudo));
+  w.dir1 = (v_[T[1]] - v_[T[0]]).normalized();
+  w.dir2 = w.normal.cross(w.dir1).normalized();
+  w.param = {static_cast<double>(best_t), 0.0};
+  w.param_count = 0;
+  return w;
+}
+
+std::string TriMeshWall::describe() const {
+  return fmt::format("trimesh triangles={} fluid={}", tris_.size(),
+                     sign_ > 0 ? "outside" : "inside");
+}
+
+double TriMeshWall::min_radius_of_curvature() const {
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace curvsph

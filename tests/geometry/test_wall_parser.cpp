@@ -54,13 +54,21 @@ TEST(GeometryParser, ShapeNotInThisDimension) {
   expect_error<2>("[{shape: nurbs_surface}]", "walls.0.shape", "not available in 2-D");
 }
 
-TEST(GeometryParser, NurbsAndCadSlotsAreMarked) {
-  expect_error<2>("[{shape: nurbs_curve}]", "walls.0.shape",
-                  "shape 'nurbs_curve' is not built into this binary yet");
-  expect_error<3>("[{shape: nurbs_surface}]", "walls.0.shape",
-                  "shape 'nurbs_surface' is not built into this binary yet");
-  expect_error<3>("[{shape: cad, file: part.step}]", "walls.0.shape",
-                  "shape 'cad' is not built into this binary yet");
+TEST(GeometryParser, NurbsAndCadShapesAreWired) {
+  // A rational quadratic unit circle (9 control points, w = sqrt(2)/2 at the corners), fluid
+  // on the left of increasing parameter = inside: a point at radius 0.5 is 0.5 from the wall.
+  const std::string w = "0.7071067811865476";
+  const std::string circle =
+      "[{shape: nurbs_curve, degree: 2, fluid: left, control_points: [[1, 0], [1, 1], [0, 1], "
+      "[-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]], weights: [1, " + w + ", 1, " + w +
+      ", 1, " + w + ", 1, " + w + ", 1], knots: [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]}]";
+  const WallSet<2> walls = parse<2>(circle);
+  const auto p = walls.closest(Vec2d(0.3, 0.4));
+  EXPECT_NEAR(p.distance, 0.5, 1e-9);
+  EXPECT_NEAR(p.k1, 1.0, 1e-9);
+  expect_error<3>("[{shape: cad, file: no_such_part.step, fluid: inside}]", "walls.0.file",
+                  "not found");
+  expect_error<3>("[{shape: nurbs_surface, fluid: front}]", "walls.0.degree", "");
 }
 
 TEST(GeometryParser, WrongTypes) {

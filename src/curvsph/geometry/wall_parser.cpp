@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <string_view>
 
+#include "curvsph/cad/cad_import.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
 #include "curvsph/geometry/cylinder.hpp"
 #include "curvsph/geometry/ellipse.hpp"
+#include "curvsph/geometry/nurbs_curve_wall.hpp"
+#include "curvsph/geometry/nurbs_surface_wall.hpp"
 #include "curvsph/geometry/plane.hpp"
 #include "curvsph/geometry/sphere.hpp"
 #include "curvsph/geometry/torus.hpp"
@@ -35,11 +38,6 @@ std::vector<WallPtr<D>> single(const WallSource& s) {
   return {Make(s.node, s.file, s.key)};
 }
 
-[[noreturn]] void not_built(const WallSource& s, std::string_view shape) {
-  throw InputError(s.file, yaml::join(s.key, "shape"),
-                   fmt::format("shape '{}' is not built into this binary yet", shape));
-}
-
 struct ShapeEntry {
   std::string_view name;
   WallFactory<2> make2;  // nullptr: not available in 2-D
@@ -56,20 +54,10 @@ const std::vector<ShapeEntry>& shape_table() {
       {"cylinder", nullptr, single<3, &make_cylinder_wall>},
       {"sphere", nullptr, single<3, &make_sphere_wall>},
       {"torus", nullptr, single<3, &make_torus_wall>},
-      // ---- REGISTRATION SLOTS for the NURBS / CAD walls (nurbs/, cad/ modules) ----
-      // At merge replace each lambda by the real factory (and include its header above):
-      //   nurbs_curve:   single<2, &make_nurbs_curve_wall>
-      //   nurbs_surface: single<3, &make_nurbs_surface_wall>
-      //   cad:           [](const WallSource& s) {
-      //                    return make_cad_walls(s.node, s.file, s.key, s.base_dir); }
-      // The factories receive key_prefix = the element's path ("walls.3") and must accept
-      // the common keys `shape` and `motion` (motion is applied here, after the factory).
-      {"nurbs_curve",
-       [](const WallSource& s) -> std::vector<WallPtr<2>> { not_built(s, "nurbs_curve"); },
-       nullptr},
-      {"nurbs_surface", nullptr,
-       [](const WallSource& s) -> std::vector<WallPtr<3>> { not_built(s, "nurbs_surface"); }},
-      {"cad", nullptr, [](const WallSource& s) -> std::vector<WallPtr<3>> { not_built(s, "cad"); }},
+      {"nurbs_curve", single<2, &make_nurbs_curve_wall>, nullptr},
+      {"nurbs_surface", nullptr, single<3, &make_nurbs_surface_wall>},
+      {"cad", nullptr,
+       [](const WallSource& s) { return make_cad_walls(s.node, s.file, s.key, s.base_dir.string()); }},
   };
   return table;
 }

@@ -22,10 +22,10 @@ class ShepardCommand : public ::testing::Test {
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
     geom_ = write("circle.yaml",
-                  "dimension: 2\nwalls:\n  - {shape: circle, center: [0, 0], radius: 1, "
+                  "dimension: 2\nwalls:\n  - {shape: circle, center: [0, 0], radius: 2, "
                   "fluid: inside}\n");
     // Centre, on the wall, 0.1h inside the wall (h = 0.05).
-    points_ = write("p.csv", "x,y\n0,0\n1,0\n0,-0.995\n");
+    points_ = write("p.csv", "x,y\n0,0\n2,0\n0,-1.995\n");
   }
   void TearDown() override { fs::remove_all(dir_); }
 

@@ -123,7 +123,7 @@ TEST(BoundaryElements2D, EllipseArcLengthNormalsAndClosure) {
       const Vec2d grad = Vec2d(q.x() / (a * a), q.y() / (b * b)).normalized();
       EXPECT_NEAR(el.normal[j].dot(grad), side == FluidSide::inside ? -1.0 : 1.0, 1e-12);
       EXPECT_GE(el.gap[j], 0.0);
-      EXPECT_LT(el.gap[j], 1e-4 * mean);
+      EXPECT_LT(el.gap[j], 1e-2 * mean);  // O(dx^3) for the arc through 3 points
     }
   }
 }
@@ -202,7 +202,7 @@ TEST(BoundaryElements3D, BoxFacesAndClippedPlane) {
 }
 
 TEST(BoundaryElementsShepard, ClosedCircleAndEllipse) {
-  const double R = 1.0, h = 0.05, dx = 0.025;
+  const double R = 1.0, h = 0.02, dx = 0.01;
   for (auto side : {FluidSide::inside, FluidSide::outside}) {
     const auto el = elements_from_walls<2>(
         single<2>(std::make_shared<CircleWall>(Vec2d(0, 0), R, side)), dx, {});

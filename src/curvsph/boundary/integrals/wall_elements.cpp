@@ -267,12 +267,11 @@ bool sphere_3d(const Wall<3>& w, double dx, const Bounds<3>&, BoundaryElements<3
   };
   auto S = [&](double t, double f) { return Vec3d(c + R * radial(t, f)); };
   auto N = [&](double t, double f) { return Vec3d(s * radial(t, f)); };
-  const int mt = count_for(pi * R, dx, 2);
-  const double dt = pi / mt;
+  // One azimuthal count for every band: no T-junctions (see the header).
+  const int mt = count_for(pi * R, dx, 2), mf = count_for(2 * pi * R, dx, 3);
+  const double dt = pi / mt, df = 2 * pi / mf;
   for (int i = 0; i < mt; ++i) {
     const double t0 = i * dt, t1 = (i + 1) * dt;
-    const int mf = count_for(2 * pi * R * std::sin(0.5 * (t0 + t1)), dx, 3);
-    const double df = 2 * pi / mf;
     for (int k = 0; k < mf; ++k)
       add_surface_cell(out, S, N, t0, t1, k * df, (k + 1) * df,
                        R * R * (std::cos(t0) - std::cos(t1)) * df);

@@ -15,8 +15,11 @@
 //       box      its 6 faces as square patches
 //       cylinder clipped to the domain's extent along the axis (the projection of the
 //                domain box on it), quads in (angle, axial coordinate)
-//       sphere   latitude bands of height about dx, each split into about-dx quads
-//                (triangles at the poles)
+//       sphere   latitude bands of height about dx, all split into the same number of
+//                quads (about dx along the equator, narrower towards the poles; triangles at
+//                the poles). The same count in every band keeps the polyhedron watertight:
+//                bands with their own counts (T-junctions at the seams) gave on-wall gamma
+//                errors up to 0.5 at seam vertices and 0.03 elsewhere.
 //       torus    quads in (poloidal, toroidal) angles, about dx on the tube and on the mean
 //                circle of the torus
 //  Curved patches: vertices on the surface (planar, by symmetry: rectangles or isosceles

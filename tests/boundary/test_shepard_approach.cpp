@@ -26,9 +26,14 @@ TEST(ShepardApproach, GeometricBeatsFoilsAndWritesCsv) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header,
-            "distance_over_h,gamma_reference,gamma_geometric,gamma_monolithic,gamma_volume");
+            "distance_over_h,gamma_reference,gamma_geometric,gamma_monolithic,"
+            "gamma_monolithic_contour,gamma_volume");
   std::ifstream js(dir / "metrics.json");
   const auto j = nlohmann::json::parse(js);
   EXPECT_TRUE(j.contains("gamma_max_abs_error_circle_geometric"));
+  // The paper's contour rule puts gamma = 1/2 on a flat wall exactly (the plain foil: 1).
+  const auto& wall = r.curves[0];
+  EXPECT_NEAR(wall.gamma.at("monolithic_contour").back(), 0.5, 1e-12);
+  EXPECT_NEAR(wall.gamma.at("monolithic").back(), 1.0, 1e-12);
   std::filesystem::remove_all(dir);
 }

@@ -112,6 +112,8 @@ ShepardApproachResult run_shepard_approach(const ShepardApproachOptions& o) {
                     [R](double t) { return Vec2d(R + t, 0); }, 2 * h, Vec2d(0, 0)});
 
   ShepardApproachResult result;
+  ShepardQuadrature contour;  // the paper's "gamma = 1/2 on the contour" monolithic rule
+  contour.monolithic_contour_half = true;
   for (const Setup& s : setups) {
     // Volume-mode particles: cell-centred lattice of spacing dx in the fluid.
     std::vector<Vec2d> pos;
@@ -134,6 +136,7 @@ ShepardApproachResult run_shepard_approach(const ShepardApproachOptions& o) {
       c.reference.push_back(shepard_reference_2d(x, h, s.inside));
       c.gamma["geometric"].push_back(shepard_geometric<2>(s.elements, x, h));
       c.gamma["monolithic"].push_back(shepard_monolithic<2>(s.elements, x, h));
+      c.gamma["monolithic_contour"].push_back(shepard_monolithic<2>(s.elements, x, h, contour));
       c.gamma["volume"].push_back(shepard_volume<2>(pos, vol, x, h));
     }
     for (const auto& [mode, g] : c.gamma) {

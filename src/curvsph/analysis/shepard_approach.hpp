@@ -8,6 +8,8 @@
 //   corner_diagonal  along the bisector of a 90 deg corner, distance to the apex 3h .. 0
 //   circle_inside    radially towards a circle (radius circle_radius_over_h * h), fluid inside
 //   circle_outside   radially towards the same circle, fluid outside
+// Modes: geometric, monolithic, monolithic_contour (monolithic with the paper's "gamma = 1/2
+// on the contour" rule, ShepardQuadrature::monolithic_contour_half), volume.
 // Metrics: gamma_max_abs_error_<approach>_<mode> (plus _circle_<mode>, the worse of the two
 // circle approaches).
 #include <filesystem>

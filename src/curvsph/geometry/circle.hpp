@@ -14,6 +14,10 @@ class CircleWall final : public Wall<2> {
   WallPoint<2> closest(const Vec2d& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override { return radius_; }
+  // Geometry, for discretisations (boundary elements).
+  const Vec2d& center() const { return center_; }
+  double radius() const { return radius_; }
+  FluidSide side() const { return side_; }
 
  private:
   Vec2d center_;

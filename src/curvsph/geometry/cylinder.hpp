@@ -17,6 +17,11 @@ class CylinderWall final : public Wall<3> {
   WallPoint<3> closest(const Vec3d& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override { return radius_; }
+  // Geometry, for discretisations (boundary elements): `axis` is unit.
+  const Vec3d& point() const { return point_; }
+  const Vec3d& axis() const { return axis_; }
+  double radius() const { return radius_; }
+  FluidSide side() const { return side_; }
 
  private:
   Vec3d point_, axis_, e1_, e2_;

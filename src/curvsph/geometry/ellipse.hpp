@@ -23,6 +23,11 @@ class EllipseWall final : public Wall<2> {
   std::string describe() const override;
   // min(b^2/a, a^2/b), reached at the tips of the major axis.
   double min_radius_of_curvature() const override;
+  // Geometry, for discretisations (boundary elements): semi-axes a (along x), b (along y).
+  const Vec2d& center() const { return center_; }
+  double semi_axis_a() const { return a_; }
+  double semi_axis_b() const { return b_; }
+  FluidSide side() const { return side_; }
 
  private:
   Vec2d center_;

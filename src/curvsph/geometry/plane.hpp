@@ -16,6 +16,9 @@ class PlaneWall final : public Wall<D> {
   WallPoint<D> closest(const VecD<D>& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override;
+  // Geometry, for discretisations (boundary elements): `normal` is unit.
+  const VecD<D>& point() const { return point_; }
+  const VecD<D>& normal() const { return normal_; }
 
  private:
   VecD<D> point_, normal_, t1_, t2_;

@@ -15,6 +15,10 @@ class SphereWall final : public Wall<3> {
   WallPoint<3> closest(const Vec3d& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override { return radius_; }
+  // Geometry, for discretisations (boundary elements).
+  const Vec3d& center() const { return center_; }
+  double radius() const { return radius_; }
+  FluidSide side() const { return side_; }
 
  private:
   Vec3d center_;

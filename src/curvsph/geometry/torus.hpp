@@ -23,6 +23,12 @@ class TorusWall final : public Wall<3> {
   std::string describe() const override;
   // min(a, R - a): the tube, or the major direction on the inner equator.
   double min_radius_of_curvature() const override;
+  // Geometry, for discretisations (boundary elements): `axis` is unit.
+  const Vec3d& center() const { return center_; }
+  const Vec3d& axis() const { return axis_; }
+  double major_radius() const { return major_; }
+  double minor_radius() const { return minor_; }
+  FluidSide side() const { return side_; }
 
  private:
   Vec3d center_, axis_, e1_, e2_;

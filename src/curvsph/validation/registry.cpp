@@ -3,8 +3,13 @@
 
 namespace curvsph {
 
+StudyResult run_shepard_approach_study(const StudyContext& ctx);  // shepard_approach_study.cpp
+
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
+      {"shepard_approach",
+       "Shepard factor approaching a wall, corner, circle (Calderon Figs. 2, 4-7)",
+       run_shepard_approach_study},
   };
   return studies;
 }

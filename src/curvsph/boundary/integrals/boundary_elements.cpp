@@ -15,6 +15,7 @@ void BoundaryElements<D>::reserve(std::size_t n) {
   vertices.reserve(n);
   vertex_count.reserve(n);
   curvature.reserve(n);
+  gap.reserve(n);
 }
 
 template <int D>
@@ -25,6 +26,7 @@ void BoundaryElements<D>::append(const BoundaryElements& o) {
   vertices.insert(vertices.end(), o.vertices.begin(), o.vertices.end());
   vertex_count.insert(vertex_count.end(), o.vertex_count.begin(), o.vertex_count.end());
   curvature.insert(curvature.end(), o.curvature.begin(), o.curvature.end());
+  gap.insert(gap.end(), o.gap.begin(), o.gap.end());
 }
 
 template <int D>
@@ -57,6 +59,7 @@ void BoundaryElements<D>::add_arc(const VecD<D>& a, const VecD<D>& b,
   vertices.push_back({a, b});
   vertex_count.push_back(2);
   curvature.push_back(kappa);
+  gap.push_back(0.0);
 }
 
 template <int D>
@@ -81,6 +84,41 @@ void BoundaryElements<D>::add_polygon(const VecD<D>* v, int count) requires(D ==
   vertices.push_back(verts);
   vertex_count.push_back(count);
   curvature.push_back(0.0);
+  gap.push_back(0.0);
+}
+
+template <int D>
+void BoundaryElements<D>::add_curved_arc(const VecD<D>& a, const VecD<D>& b, const VecD<D>& c,
+                                         const VecD<D>& n, double length, double kappa,
+                                         double g) requires(D == 2) {
+  if (!((b - a).norm() > 0) || !(length > 0))
+    throw std::invalid_argument("boundary element with zero length");
+  if (kappa != 0.0 && (b - a).norm() > 2.0 / std::abs(kappa))
+    throw std::invalid_argument("arc chord longer than the circle's diameter");
+  centre.push_back(c);
+  normal.push_back(n.normalized());
+  area.push_back(length);
+  vertices.push_back({a, b});
+  vertex_count.push_back(2);
+  curvature.push_back(kappa);
+  gap.push_back(std::max(0.0, g));
+}
+
+template <int D>
+void BoundaryElements<D>::add_curved_patch(const VecD<D>* v, int count, const VecD<D>& c,
+                                           const VecD<D>& n, double a, double g) requires(D == 3) {
+  if (count < 3 || count > 4) throw std::invalid_argument("3-D elements have 3 or 4 vertices");
+  if (!(a > 0)) throw std::invalid_argument("boundary element with zero area");
+  Vertices verts;
+  verts.fill(VecD<D>::Zero());
+  for (int k = 0; k < count; ++k) verts[static_cast<std::size_t>(k)] = v[k];
+  centre.push_back(c);
+  normal.push_back(n.normalized());
+  area.push_back(a);
+  vertices.push_back(verts);
+  vertex_count.push_back(count);
+  curvature.push_back(0.0);
+  gap.push_back(std::max(0.0, g));
 }
 
 template <int D>

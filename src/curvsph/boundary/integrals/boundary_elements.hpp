@@ -31,6 +31,12 @@ struct BoundaryElements {
   std::vector<Vertices> vertices;
   std::vector<std::int32_t> vertex_count;  // 2 in 2-D; 3 or 4 in 3-D
   std::vector<double> curvature;           // 2-D arcs (signed, DESIGN sign); 0 = flat
+  // How far the true wall may lie from the element's integrated shape (the arc or the planar
+  // polygon): 0 for exact elements (segments, circle arcs, flat patches); > 0 for elements
+  // that stand for a piece of a curved wall (ellipse arcs, sphere / torus / cylinder
+  // patches). The geometric Shepard factor counts a point behind such an element by less
+  // than `gap` as a point on the wall (it lies on the true wall to that accuracy).
+  std::vector<double> gap;
 
   std::size_t size() const { return centre.size(); }
   void reserve(std::size_t n);
@@ -43,6 +49,16 @@ struct BoundaryElements {
   void add_arc(const VecD<D>& a, const VecD<D>& b, double kappa) requires(D == 2);
   // 3-D planar polygon (3 or 4 vertices, counter-clockwise seen from the fluid).
   void add_polygon(const VecD<D>* v, int count) requires(D == 3);
+
+  // A piece of a curved wall, with the centre, unit normal and area (length) taken from the
+  // true wall rather than from the vertices. 2-D: integrated as the circular arc a -> b with
+  // curvature kappa (fluid on the left of a -> b); 3-D: integrated as the planar polygon v
+  // (3 or 4 vertices on the wall, counter-clockwise seen from the fluid). `gap` as above.
+  void add_curved_arc(const VecD<D>& a, const VecD<D>& b, const VecD<D>& centre,
+                      const VecD<D>& normal, double length, double kappa,
+                      double gap) requires(D == 2);
+  void add_curved_patch(const VecD<D>* v, int count, const VecD<D>& centre, const VecD<D>& normal,
+                        double area, double gap) requires(D == 3);
 
   // Radius of a ball about centre[j] containing the whole element.
   double bounding_radius(std::size_t j) const;

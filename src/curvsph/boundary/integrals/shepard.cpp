@@ -133,6 +133,36 @@ double element_distance(const BoundaryElements<3>& el, std::size_t j, const Vec3
   return d;
 }
 
+// Signed offset of x from element j's integrated shape (> 0 on the fluid side) and whether
+// x projects onto the element (for the `gap` band of curved-wall elements).
+double signed_offset(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x, bool& onto) {
+  const Vec2d& a = el.vertices[j][0];
+  const Vec2d& b = el.vertices[j][1];
+  const double kappa = el.curvature[j];
+  if (kappa == 0.0) {
+    const Vec2d e = b - a;
+    const double t = e.dot(x - a) / e.squaredNorm();
+    onto = t >= 0.0 && t <= 1.0;
+    return el.normal[j].dot(x - a);
+  }
+  const Vec2d O = arc_circle_centre(el, j);
+  const double R = 1.0 / std::abs(kappa), r = (x - O).norm();
+  onto = r > 0.0 && el.normal[j].dot(O + (x - O) * (R / r) - a) * kappa <= 0.0;
+  return kappa > 0 ? R - r : r - R;
+}
+
+double signed_offset(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x, bool& onto) {
+  const auto& v = el.vertices[j];
+  const int m = el.vertex_count[j];
+  Vec3d pn = Vec3d::Zero();
+  for (int k = 1; k + 1 < m; ++k)
+    pn += (v[static_cast<std::size_t>(k)] - v[0]).cross(v[static_cast<std::size_t>(k + 1)] - v[0]);
+  pn.normalize();
+  const double s = pn.dot(x - v[0]);
+  onto = point_in_polygon(el, j, x - s * pn, 0.0);
+  return s;
+}
+
 // ---- Polynomial part: int_j n(y).(y - x) F_Pext(|y - x|) dy -----------------------------
 
 double poly_part(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x,
@@ -289,18 +319,39 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
-  std::vector<std::size_t> near;
+  std::vector<std::size_t> near, touched;
   VecD<D> mean_normal = VecD<D>::Zero();
+  double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
   for (std::size_t j = 0; j < el.size(); ++j) {
     if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) continue;
     near.push_back(j);
-    if (element_distance(el, j, x) <= tol) mean_normal += el.normal[j];
+    const double d = element_distance(el, j, x);
+    bool hit = d <= tol;
+    if (!hit && j < el.gap.size() && el.gap[j] > 0.0 && d <= el.gap[j] + tol) {
+      // Between the element and the curved wall it stands for: on the wall.
+      bool onto = false;
+      const double s = signed_offset(el, j, x, onto);
+      if (onto && s < 0.0) {
+        hit = true;
+        behind = std::max(behind, -s);
+      }
+    }
+    if (hit) {
+      mean_normal += el.normal[j];
+      touched.push_back(j);
+    }
   }
   // On the wall: the singular part is the limit from the fluid side along the mean normal of
-  // the touched elements (makes contact points, vertices and corner apexes exact).
+  // the touched elements (makes contact points, vertices and corner apexes exact); a point
+  // behind a curved-wall element by less than its gap is first moved to its fluid side.
   VecD<D> xs = x;
   const double mn = mean_normal.norm();
-  if (mn > 1e-12) xs = x + (1e-9 * h / mn) * mean_normal;
+  if (mn > 1e-12) {
+    const VecD<D> m = mean_normal / mn;
+    double cmin = 1.0;
+    for (std::size_t j : touched) cmin = std::min(cmin, el.normal[j].dot(m));
+    xs = x + (1.5 * behind / std::max(cmin, 0.2) + 1e-9 * h) * m;
+  }
   double angles = 0, poly = 0;
   for (std::size_t j : near) {
     angles += subtended_angle<D>(el, j, xs);
@@ -310,16 +361,24 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
 }
 
 template <int D>
-double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h) {
+double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                          const ShepardQuadrature& quad) {
   const BoundaryKernel<D> F(h);
+  const double tol = quad.on_wall_tolerance * h;
   double sum = 0;
+  bool on_contour = false;
   for (std::size_t j = 0; j < el.size(); ++j) {
     const VecD<D> r = el.centre[j] - x;
     const double rn = r.norm();
+    if (rn - el.bounding_radius(j) >= 2.0 * h) continue;
+    if (quad.monolithic_contour_half && element_distance(el, j, x) <= tol) {
+      on_contour = true;  // the element x lies on: replaced by the exact -1/2 below
+      continue;
+    }
     if (rn >= 2.0 * h || rn <= 1e-12 * h) continue;
     sum += el.normal[j].dot(r) * F.value(rn) * el.area[j];
   }
-  return 1.0 - sum;
+  return 1.0 - sum - (on_contour ? 0.5 : 0.0);
 }
 
 template <int D>
@@ -350,7 +409,7 @@ std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& 
         out[i] = shepard_geometric<D>(el, points[i], h, quad);
         break;
       case ShepardMode::monolithic:
-        out[i] = shepard_monolithic<D>(el, points[i], h);
+        out[i] = shepard_monolithic<D>(el, points[i], h, quad);
         break;
       case ShepardMode::volume:
         out[i] = shepard_volume<D>(fluid_positions, fluid_volumes, points[i], h);
@@ -362,14 +421,15 @@ std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& 
   return out;
 }
 
-#define CURVSPH_SHEPARD_INSTANTIATE(D)                                                       \
-  template double shepard_geometric<D>(const BoundaryElements<D>&, const VecD<D>&, double,   \
-                                       const ShepardQuadrature&);                            \
-  template double shepard_monolithic<D>(const BoundaryElements<D>&, const VecD<D>&, double); \
-  template double shepard_volume<D>(std::span<const VecD<D>>, std::span<const double>,       \
-                                    const VecD<D>&, double);                                 \
-  template std::vector<double> shepard_factor<D>(                                            \
-      ShepardMode, const BoundaryElements<D>&, std::span<const VecD<D>>, double,             \
+#define CURVSPH_SHEPARD_INSTANTIATE(D)                                                      \
+  template double shepard_geometric<D>(const BoundaryElements<D>&, const VecD<D>&, double,  \
+                                       const ShepardQuadrature&);                           \
+  template double shepard_monolithic<D>(const BoundaryElements<D>&, const VecD<D>&, double, \
+                                        const ShepardQuadrature&);                          \
+  template double shepard_volume<D>(std::span<const VecD<D>>, std::span<const double>,      \
+                                    const VecD<D>&, double);                                \
+  template std::vector<double> shepard_factor<D>(                                           \
+      ShepardMode, const BoundaryElements<D>&, std::span<const VecD<D>>, double,            \
       std::span<const VecD<D>>, std::span<const double>, const ShepardQuadrature&);
 CURVSPH_SHEPARD_INSTANTIATE(2)
 CURVSPH_SHEPARD_INSTANTIATE(3)

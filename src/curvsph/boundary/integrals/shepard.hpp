@@ -13,7 +13,8 @@
 //                A point on the wall (within tolerance) is treated as the limit from the
 //                fluid side along the mean normal of the elements it touches, so that the
 //                contact point, a corner apex and a vertex between elements get gamma right.
-//  - monolithic: all of F summed at the element centres (the paper's foil).
+//  - monolithic: all of F summed at the element centres (the paper's foil); optionally with
+//                the paper's "gamma = 1/2 on the contour" rule (monolithic_contour_half).
 //  - volume:     gamma_i = sum_j W_ij V_j over fluid particles (Calderon eq. 4).
 //  - none:       gamma = 1.
 #include <span>
@@ -36,6 +37,10 @@ struct ShepardQuadrature {
   int gauss_points = 4;             // per piece (2-D) or per direction per triangle (3-D)
   double max_piece_over_h = 0.5;    // sub-divide elements into pieces no longer than this * h
   double on_wall_tolerance = 1e-9;  // in units of h: closer than this counts as on the wall
+  // Monolithic mode only: the paper's contour rule (Calderon §2.2, after eq. 17): a point on
+  // the contour skips the elements it lies on and takes their contribution as exactly -1/2
+  // (gamma = 1/2 from them). Without it those elements contribute nothing (n.(y - x) = 0).
+  bool monolithic_contour_half = false;
 };
 
 // Signed angle (2-D) / solid angle (3-D) element j subtends at x, positive when x is on the
@@ -48,7 +53,8 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
                          const ShepardQuadrature& quad = {});
 
 template <int D>
-double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h);
+double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                          const ShepardQuadrature& quad = {});
 
 template <int D>
 double shepard_volume(std::span<const VecD<D>> positions, std::span<const double> volumes,

@@ -6,6 +6,7 @@
 // A new analysis is one new file plus one line in registry.cpp.
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -23,8 +24,10 @@ class Analysis {
   virtual ~Analysis() = default;
   // Called at t = 0 and at every output time.
   virtual void observe(double /*t*/, const Particles<D>& /*P*/) {}
-  // Adds the analysis' figures to metrics.
-  virtual void finish(double t, const Particles<D>& P, nlohmann::json& metrics) = 0;
+  // Adds the analysis' figures to metrics; may write its curves (CSV) into out_dir when
+  // that is not empty.
+  virtual void finish(double t, const Particles<D>& P, nlohmann::json& metrics,
+                      const std::filesystem::path& out_dir) = 0;
 };
 
 template <int D>

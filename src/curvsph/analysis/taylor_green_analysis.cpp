@@ -1,6 +1,9 @@
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <fstream>
 #include <vector>
 
 #include "curvsph/core/error.hpp"
@@ -50,7 +53,15 @@ class TaylorGreenAnalysis final : public Analysis<2> {
     energies_.push_back(ke);
   }
 
-  void finish(double t, const Particles<2>& P, nlohmann::json& m) override {
+  void finish(double t, const Particles<2>& P, nlohmann::json& m,
+              const std::filesystem::path& out_dir) override {
+    if (!out_dir.empty()) {
+      std::ofstream csv(out_dir / "taylor_green_energy.csv");
+      csv << "time,kinetic_energy,kinetic_energy_exact\n";
+      for (std::size_t k = 0; k < times_.size(); ++k)
+        csv << fmt::format("{:.9g},{:.9g},{:.9g}\n", times_[k], energies_[k],
+                           energies_.front() * std::exp(-tg_.energy_decay_rate() * times_[k]));
+    }
     double err2 = 0, ref2 = 0;
     for (std::size_t i = 0; i < P.size(); ++i) {
       const Vec2d ue = tg_.velocity(P.x[i][0], P.x[i][1], t);

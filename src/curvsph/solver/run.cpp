@@ -137,7 +137,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   m["seconds_forces"] = pt.forces;
   m["seconds_integrate"] = pt.integrate;
   m["seconds_output"] = pt.output;
-  for (auto& a : analyses) a->finish(solver.time(), solver.particles(), m);
+  for (auto& a : analyses)
+    a->finish(solver.time(), solver.particles(), m,
+              o.write_files ? o.out_dir : std::filesystem::path());
   if (o.write_files) {
     std::ofstream(o.out_dir / "metrics.json") << m.dump(2) << '\n';
     log("done: {} steps in {:.2f} s", solver.steps(), wall);

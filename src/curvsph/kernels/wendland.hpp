@@ -28,8 +28,8 @@ struct WendlandC2 {
 
   // W(r); zero for r >= 2h.
   Real value(Real r) const {
+    if (r >= support) return 0;  // exact: r * inv_h can round to just below 2 at r = 2h
     const Real q = r * inv_h;
-    if (q >= 2) return 0;
     const Real t = 1 - Real(0.5) * q;
     const Real t2 = t * t;
     return alpha * t2 * t2 * (2 * q + 1);
@@ -37,16 +37,16 @@ struct WendlandC2 {
 
   // dW/dr; dW/dq = -5 q (1 - q/2)^3, so dW/dr = -5 alpha q (1 - q/2)^3 / h.
   Real derivative(Real r) const {
+    if (r >= support) return 0;
     const Real q = r * inv_h;
-    if (q >= 2) return 0;
     const Real t = 1 - Real(0.5) * q;
     return -5 * alpha * q * t * t * t * inv_h;
   }
 
   // (1/r) dW/dr, finite at r = 0: grad W = x_ij * this.
   Real gradient_factor(Real r) const {
+    if (r >= support) return 0;
     const Real q = r * inv_h;
-    if (q >= 2) return 0;
     const Real t = 1 - Real(0.5) * q;
     return -5 * alpha * t * t * t * inv_h * inv_h;
   }

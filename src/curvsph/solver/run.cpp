@@ -46,7 +46,16 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   log("curvsph run: case '{}' from {}", c.name, c.file_name());
 
   Solver<D> solver(c);
-  solver.initialize();
+  try {
+    solver.initialize();
+  } catch (const InstabilityError& e) {
+    // The initial state is already bad (e.g. an initial pressure field the EOS maps outside
+    // [0.5, 2] rho0): leave the snapshot DESIGN.md §3 promises, as for a later step.
+    log("UNSTABLE: {}", e.what());
+    if (o.write_files && c.write_vtk)
+      io::write_vtp(o.out_dir / "particles_unstable.vtp", solver.particles());
+    throw;
+  }
   const auto& P = solver.particles();
   log("{} particles, dimension {}, dx = {}, h = {}, threads = {}", P.size(), D, c.dx, c.h(),
       omp_get_max_threads());

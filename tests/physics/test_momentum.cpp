@@ -35,6 +35,14 @@ FluidParams<D> params(double viscosity, double delta_sph = 0) {
   return F;  // gravity zero, driving term off
 }
 
+// The solver's pair passes: accelerations, and on the continuity path the density rate.
+template <int D, class Lat>
+void pair_terms(Particles<D>& P, const Lat& L, const FluidParams<D>& F, bool continuity,
+                const std::vector<Vec<D>>* grad_rho) {
+  fluid_forces(P, L.cells, L.W, F);
+  if (continuity) continuity_rate(P, L.cells, L.W, F.delta_sph * L.W.h * F.eos.c0, grad_rho);
+}
+
 // Random velocities, pressures (of both signs), masses and densities on a jittered periodic
 // lattice; returns |sum_i m_i a_i| / sum_i |m_i a_i| and the same for the density rate's mass
 // flux sum_i V_i drho_i (continuity path).
@@ -54,7 +62,7 @@ void check_pair_forces_cancel(bool continuity) {
   const auto F = params<D>(0.05, continuity ? 0.1 : 0);
   std::vector<Vec<D>> grad_rho;
   if (continuity) renormalised_density_gradient(P, L.cells, L.W, grad_rho);
-  fluid_forces(P, L.cells, L.W, F, continuity, continuity ? &grad_rho : nullptr);
+  pair_terms(P, L, F, continuity, continuity ? &grad_rho : nullptr);
   Vec<D> total = Vec<D>::Zero();
   double scale = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
@@ -71,7 +79,7 @@ void check_pair_forces_cancel(bool continuity) {
     if (part == 0) G.viscosity = {0.0};
     if (part == 1)
       for (auto& p : Q.p) p = 0;
-    fluid_forces(Q, L.cells, L.W, G, continuity, continuity ? &grad_rho : nullptr);
+    pair_terms(Q, L, G, continuity, continuity ? &grad_rho : nullptr);
     Vec<D> t = Vec<D>::Zero();
     double s = 0;
     for (std::size_t i = 0; i < Q.size(); ++i) {
@@ -103,7 +111,7 @@ void check_uniform_pressure_on_lattice() {
   density_summation(P, L.cells, L.W);  // uniform on a perfect periodic lattice
   for (auto& p : P.p) p = 250;
   const auto F = params<D>(0.1);
-  fluid_forces(P, L.cells, L.W, F, false, no_gradient<D>());
+  pair_terms(P, L, F, false, no_gradient<D>());
   // Scale: one neighbour's share of the pressure force per unit mass.
   const double s = P.sigma[0];
   const double unit = 250 / (s * s) * std::abs(L.W.gradient_factor(L.dx)) * L.dx / P.mass[0];
@@ -130,7 +138,7 @@ void check_uniform_velocity_no_viscous_force() {
     P.sigma[i] = P.rho[i] / P.mass[i];
   }
   const auto F = params<D>(3.0);
-  fluid_forces(P, L.cells, L.W, F, true, no_gradient<D>());  // continuity: div u = 0 too
+  pair_terms(P, L, F, true, no_gradient<D>());  // continuity: div u = 0 too
   for (std::size_t i = 0; i < P.size(); ++i) {
     ASSERT_EQ(P.a[i].norm(), 0.0) << "particle " << i;
     ASSERT_EQ(P.drho[i], 0.0) << "particle " << i;

@@ -49,4 +49,25 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
   });
 }
 
+// Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
+// is the renormalised gradient, or nullptr when delta = 0.
+template <int D>
+void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho) {
+  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+    Real div = 0, diff = 0;
+    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+      if (j == i) return;
+      const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
+      const Real Vj = P.mass[j] / P.rho[j];
+      div += Vj * f * (P.v[i] - P.v[j]).dot(r);
+      if (grad_rho) {
+        const Vec<D> psi = -2 * (P.rho[j] - P.rho[i]) * r / r2 - ((*grad_rho)[i] + (*grad_rho)[j]);
+        diff += Vj * f * psi.dot(r);
+      }
+    });
+    P.drho[i] = P.rho[i] * div + delta_h_c0 * diff;
+  });
+}
+
 }  // namespace curvsph

@@ -70,22 +70,47 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
       break;
     }
     case RegionSpec::Kind::inside_walls:
-      throw InputError(file, key, "inside_walls needs wall geometry, which this case lacks");
+      break;  // needs the walls: see generate_particles
   }
-  if (pts.empty())
+  if (pts.empty() && r.kind != RegionSpec::Kind::inside_walls)
     throw InputError(file, key, "the region holds no particle at this resolution");
   return pts;
 }
 
 template <int D>
-void generate_particles(const Case& c, Particles<D>& P) {
+void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls) {
   std::vector<GeneratedPoint> all;
   std::vector<int> phase;
+  const double clearance = 0.5 * c.dx * (1 - 1e-6);
+  auto wet = [&](const Vec3d& x) {
+    const VecD<D> p = x.head<D>();
+    for (const auto& w : walls.walls())
+      if (w->closest(p).distance < clearance) return false;
+    return true;
+  };
   for (std::size_t f = 0; f < c.fluids.size(); ++f) {
-    const auto pts = generate_region(c.fluids[f].region, D, c.dx, c.file_name(),
-                                     "fluids." + std::to_string(f) + ".region");
-    all.insert(all.end(), pts.begin(), pts.end());
-    phase.insert(phase.end(), pts.size(), static_cast<int>(f));
+    const std::string key = "fluids." + std::to_string(f) + ".region";
+    std::vector<GeneratedPoint> pts;
+    if (c.fluids[f].region.kind == RegionSpec::Kind::inside_walls) {
+      if (!c.has_domain || walls.empty())
+        throw InputError(c.file_name(), key, "inside_walls needs walls and domain.min/max");
+      RegionSpec box;
+      box.min = c.domain_min;
+      box.max = c.domain_max;
+      pts = generate_region(box, D, c.dx, c.file_name(), key);
+    } else {
+      pts = generate_region(c.fluids[f].region, D, c.dx, c.file_name(), key);
+    }
+    std::size_t kept = 0;
+    for (const auto& p : pts)
+      if (walls.empty() || wet(p.x)) {
+        all.push_back(p);
+        ++kept;
+      }
+    if (kept == 0)
+      throw InputError(c.file_name(), key,
+                       "no particle of this region lies on the fluid side of the walls");
+    phase.insert(phase.end(), kept, static_cast<int>(f));
   }
   P.resize(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
@@ -100,7 +125,7 @@ void generate_particles(const Case& c, Particles<D>& P) {
   }
 }
 
-template void generate_particles<2>(const Case&, Particles<2>&);
-template void generate_particles<3>(const Case&, Particles<3>&);
+template void generate_particles<2>(const Case&, Particles<2>&, const WallSet<2>&);
+template void generate_particles<3>(const Case&, Particles<3>&, const WallSet<3>&);
 
 }  // namespace curvsph

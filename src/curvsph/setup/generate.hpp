@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "curvsph/core/particles.hpp"
+#include "curvsph/geometry/wall.hpp"
 #include "curvsph/io/case_file.hpp"
 
 namespace curvsph {
@@ -18,8 +19,10 @@ struct GeneratedPoint {
 std::vector<GeneratedPoint> generate_region(const RegionSpec& region, int dimension, double dx,
                                             const std::string& file, const std::string& key);
 
-// All fluids of the case into P (mass = rho0 * volume, velocity from the fluid spec).
+// All fluids of the case into P (mass = rho0 * volume, velocity from the fluid spec). Points
+// closer than dx/2 to a wall, or on its far side, are dropped, so a region may overlap the
+// walls; `inside_walls` fills the domain box on the fluid side of every wall.
 template <int D>
-void generate_particles(const Case& c, Particles<D>& P);
+void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls);
 
 }  // namespace curvsph

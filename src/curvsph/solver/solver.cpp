@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
@@ -28,10 +29,9 @@ struct Stopwatch {
 template <int D>
 Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (c.dimension != D) throw InputError(c.file_name(), "dimension", "solver dimension mismatch");
-  if (c.root["walls"] && c.root["walls"].IsSequence() && c.root["walls"].size() > 0)
-    throw InputError(c.file_name(), "walls",
-                     "wall boundaries are not available in this build yet (see issue #4/#5)");
-  generate_particles<D>(c, P_);
+  if (c.root["walls"] && c.root["walls"].IsSequence())
+    walls_ = parse_walls<D>(c.root["walls"], c.file_name(), c.file.parent_path());
+  generate_particles<D>(c, P_, walls_);
   for (const auto& f : c.fluids) {
     F_.rho0.push_back(static_cast<Real>(f.rho0));
     F_.viscosity.push_back(static_cast<Real>(f.viscosity));
@@ -57,6 +57,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
 
   if (!c.initial_field.empty())
     apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+  boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
 }
 
 template <int D>
@@ -76,19 +77,49 @@ void Solver<D>::resort() {
 }
 
 template <int D>
-void Solver<D>::compute_rates() {
+void Solver<D>::compute_rates(Real dt_rho) {
+  if (boundary_) {
+    Stopwatch sw{times_.boundary};
+    boundary_->prepare(P_, t_);
+    if (!boundary_->penetrated().empty()) {
+      const Index i = boundary_->penetrated().front();
+      throw InstabilityError(
+          fmt::format("step {}, t = {:.6g}: particle {} went through a wall ({} particles did)",
+                      steps_, t_, P_.id[i], boundary_->penetrated().size()),
+          steps_, static_cast<long>(P_.id[i]));
+    }
+  }
   {
     Stopwatch sw{times_.density};
     if (continuity_) {
-      update_pressure(P_, F_);
-      if (F_.delta_sph > 0) renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+      // rho^{n+1} = rho^n + dt D(x^{n+1}, v^{n+1/2}): the density is advanced like a position,
+      // with the half-step velocity, so the scheme stays symplectic for acoustic modes (a
+      // density rate lagging half a step amplifies sound waves every step).
+      if (dt_rho > 0) {
+        const bool delta = F_.delta_sph > 0;
+        if (delta) renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+        continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
+                        delta ? &grad_rho_ : nullptr);
+        if (boundary_) boundary_->add_density_rate(P_);
+        parallel_for(static_cast<Index>(P_.size()),
+                     [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
+      }
     } else {
       density_summation(P_, cells_, W_);
-      update_pressure(P_, F_);
+      if (boundary_) boundary_->add_density(P_);
     }
+    update_pressure(P_, F_);
+  }
+  {
+    Stopwatch sw{times_.forces};
+    fluid_forces(P_, cells_, W_, F_);
+  }
+  if (boundary_) {
+    Stopwatch sw{times_.boundary};
+    boundary_->add_accelerations(P_);
   }
   Stopwatch sw{times_.forces};
-  fluid_forces(P_, cells_, W_, F_, continuity_, F_.delta_sph > 0 ? &grad_rho_ : nullptr);
+  body_forces(P_, F_);
 }
 
 template <int D>
@@ -96,7 +127,7 @@ void Solver<D>::initialize() {
   build_neighbors();
   resort();
   build_neighbors();
-  compute_rates();
+  compute_rates(0);
   check_state();
 }
 
@@ -120,30 +151,20 @@ void Solver<D>::step(Real dt_cap) {
   dt_ = std::min(stable_dt(), dt_cap);
   const Real half = dt_ / 2;
   const Index n = static_cast<Index>(P_.size());
-  if (continuity_) rho_half_.resize(P_.size());
   {
     Stopwatch sw{times_.integrate};
-    // Kick (v, rho to the half step) and drift (x to the full step).
+    // Kick (v to the half step) and drift (x to the full step).
     parallel_for(n, [&](Index i) {
       P_.v[i] += half * P_.a[i];
       P_.x[i] += dt_ * P_.v[i];
       cells_.wrap(P_.x[i]);
-      if (continuity_) {
-        // Density predicted to the full step with the old rate for the pressure of this
-        // force pass, then corrected with the new rate: one force evaluation per step.
-        rho_half_[i] = P_.rho[i] + half * P_.drho[i];
-        P_.rho[i] = rho_half_[i] + half * P_.drho[i];
-      }
     });
   }
   build_neighbors();
-  compute_rates();
+  compute_rates(dt_);
   {
     Stopwatch sw{times_.integrate};
-    parallel_for(n, [&](Index i) {
-      P_.v[i] += half * P_.a[i];
-      if (continuity_) P_.rho[i] = rho_half_[i] + half * P_.drho[i];
-    });
+    parallel_for(n, [&](Index i) { P_.v[i] += half * P_.a[i]; });
   }
   if (case_.shifting > 0) {
     Stopwatch sw{times_.integrate};

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "curvsph/boundary/boundary_model.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/kernels/wendland.hpp"
@@ -38,6 +39,8 @@ class Solver {
   const WendlandC2<D>& kernel() const { return W_; }
   const FluidParams<D>& fluid() const { return F_; }
   const Case& spec() const { return case_; }
+  const WallSet<D>& walls() const { return walls_; }
+  const BoundaryModel<D>* boundary() const { return boundary_.get(); }
   const PhaseTimes& phase_times() const { return times_; }
   PhaseTimes& phase_times() { return times_; }
 
@@ -49,16 +52,19 @@ class Solver {
  private:
   void build_neighbors();
   void resort();
-  void compute_rates();
+  // Boundary pre-pass, density (summation; or continuity advanced by dt_rho), pressure and
+  // accelerations at the current positions.
+  void compute_rates(Real dt_rho);
 
   Case case_;
+  WallSet<D> walls_;
   Particles<D> P_;
   CellList<D> cells_;
   WendlandC2<D> W_;
   FluidParams<D> F_;
+  std::unique_ptr<BoundaryModel<D>> boundary_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
-  std::vector<Real> rho_half_;
   std::vector<Vec<D>> shift_, shift_dv_;
   std::vector<Real> shift_drho_;
   std::vector<std::size_t> order_;

@@ -1,0 +1,21 @@
+"""Collects docs/validation/*/summary.json into docs/validation/README.md: one table of every
+validation study with its figures, targets and references (run by `make validate`)."""
+import json
+import os
+import sys
+
+root = sys.argv[1] if len(sys.argv) > 1 else "docs/validation"
+lines = ["# Validation studies", "",
+         "Regenerate with `make validate` (or `build/curvsph validate NAME`). Each study's own "
+         "folder holds its CSV data, plots and a README with the details.", "",
+         "| study | figure | measured | target | reference | |", "|---|---|---|---|---|---|"]
+for name in sorted(os.listdir(root)):
+    path = os.path.join(root, name, "summary.json")
+    if not os.path.isfile(path):
+        continue
+    for row in json.load(open(path)):
+        lines.append(f"| [{name}]({name}/README.md) | `{row['figure']}` | {row['value']:.4g} | "
+                     f"{row['target']} | {row['reference']} | "
+                     f"{'pass' if row['pass'] else '**miss**'} |")
+open(os.path.join(root, "README.md"), "w").write("\n".join(lines) + "\n")
+print("\n".join(lines))

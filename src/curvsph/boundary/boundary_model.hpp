@@ -1,0 +1,52 @@
+#pragma once
+// A wall boundary treatment (DESIGN.md §1, §7): one strategy object per run, chosen by
+// `boundary.method` through one registration line in boundary_registry.cpp. The solver calls
+//   prepare()        after the drift, before the density pass (ghosts / Shepard factors),
+//   add_density()       summation path: wall contributions to sigma,
+//   add_density_rate()  continuity path: wall contributions to drho/dt,
+//   add_accelerations() after the fluid pair pass, before body forces,
+// so the fluid pair loops never branch on the boundary method. prepare() also reports
+// particles that went through a wall (the solver stops with exit 3).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/geometry/wall.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/physics/fluid_terms.hpp"
+
+namespace curvsph {
+
+template <int D>
+struct BoundaryContext {
+  const Case& spec;
+  const WallSet<D>& walls;
+  const WendlandC2<D>& kernel;
+  const FluidParams<D>& fluid;
+  const CellList<D>& cells;  // fluid cell list (configured with the domain's periodicity)
+};
+
+template <int D>
+class BoundaryModel {
+ public:
+  virtual ~BoundaryModel() = default;
+  virtual std::string name() const = 0;
+  // Per step, at the new positions; t is the time of those positions (moving walls).
+  virtual void prepare(const Particles<D>& P, Real t) = 0;
+  virtual void add_density(Particles<D>& P) = 0;
+  virtual void add_density_rate(Particles<D>& P) = 0;
+  virtual void add_accelerations(Particles<D>& P) = 0;
+  // Indices of fluid particles found on the wrong side of a wall by the last prepare().
+  virtual const std::vector<Index>& penetrated() const = 0;
+  // Extra particles (ghosts, wall elements) for output; may be empty.
+  virtual void append_output(std::vector<Vec<D>>& /*x*/, std::vector<int>& /*kind*/) const {}
+};
+
+// Builds the model named by case.boundary.method ("ghost", "integrals"); nullptr for "none".
+template <int D>
+std::unique_ptr<BoundaryModel<D>> make_boundary_model(const BoundaryContext<D>& ctx);
+
+}  // namespace curvsph

@@ -27,6 +27,10 @@ class BoxWall final : public Wall<D> {
   WallPoint<D> closest(const VecD<D>& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override;
+  // The box itself, for treatments that work face by face (ghost corner reflections).
+  const VecD<D>& lower() const { return min_; }
+  const VecD<D>& upper() const { return max_; }
+  FluidSide side() const { return side_; }
 
  private:
   VecD<D> min_, max_;

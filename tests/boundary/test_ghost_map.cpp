@@ -86,6 +86,30 @@ TEST(GhostMap, DensityPreservingTendsToMirror) {
   }
 }
 
+TEST(GhostMap, FastPathAgreesWithSafeguardedSolver) {
+  // The hot-loop solver and the bracketed one agree to round-off wherever a root exists,
+  // including deep particles (k d up to 0.9) where the fast path hands over.
+  int checked = 0;
+  for (double k1 : {-3.0, -1.0, -0.2, 0.0, 0.5, 1.0, 4.0})
+    for (double k2 : {-3.0, -1.0, -0.2, 0.0, 0.5, 1.0, 4.0})
+      for (double d : {1e-9, 1e-3, 0.02, 0.1, 0.2, 0.3, 0.5, 0.9}) {
+        if (k2 > k1) continue;
+        const GhostDepth fast = ghost_density_preserving(d, k1, k2);
+        const GhostDepth safe = ghost_density_preserving_safe(d, k1, k2);
+        ASSERT_EQ(fast.ok, safe.ok) << k1 << " " << k2 << " " << d;
+        if (1 - k1 * d <= 0) {
+          EXPECT_FALSE(safe.ok);  // deeper than the wall allows
+        }
+        if (!safe.ok) continue;
+        EXPECT_NEAR(fast.depth, safe.depth, 4e-16 * safe.depth) << k1 << " " << k2 << " " << d;
+        // Residual at round-off.
+        const double t = -ghost_volume_g(k1, k2, -d);
+        EXPECT_NEAR(ghost_volume_g(k1, k2, fast.depth), t, 1e-15 * t);
+        ++checked;
+      }
+  EXPECT_GT(checked, 150);
+}
+
 TEST(GhostMap, CylinderMatchesVelaVelaEq21) {
   for (double R : {0.5, 1.0, 3.0}) {
     for (double d : kDepths) {

@@ -29,6 +29,45 @@ GhostMapKind parse_ghost_map(const std::string& name, const std::string& file,
                                name));
 }
 
+GhostDepth ghost_density_preserving_safe(double d, double k1, double k2) {
+  GhostDepth g;
+  if (!ghost_depth_allowed(d, k1, k2)) return g;
+  const double H = k1 + k2, K = k1 * k2;
+  const double target = -ghost_volume_g(k1, k2, -d);
+  const double zmax = ghost_zeta_limit(k1, k2);
+  const bool bounded = zmax < std::numeric_limits<double>::infinity();
+  if (bounded && !(target < ghost_volume_g(k1, k2, zmax))) return g;
+  const double disc = 1.0 + 2.0 * H * target;
+  double z = disc >= 0 ? 2.0 * target / (1.0 + std::sqrt(disc)) : 0.5 * zmax;
+  if (K == 0.0) {
+    g.depth = z;
+    g.ok = disc >= 0 && z > 0 && z < zmax;
+    return g;
+  }
+  double lo = 0.0, hi = bounded ? zmax : target;
+  if (!(z > lo && z < hi)) z = 0.5 * (lo + hi);
+  for (int it = 0; it < 200; ++it) {
+    const double f = ghost_volume_g(k1, k2, z) - target;
+    if (f < 0)
+      lo = z;
+    else
+      hi = z;
+    const double step = f / ghost_jacobian(k1, k2, z);
+    double zn = z - step;
+    // Once the step is below 1e-8 z, Newton's quadratic convergence puts zn at round-off.
+    if (std::abs(step) <= 1e-8 * z) {
+      z = zn;
+      break;
+    }
+    if (!(zn > lo && zn < hi)) zn = 0.5 * (lo + hi);
+    if (zn == z) break;
+    z = zn;
+  }
+  g.depth = z;
+  g.ok = z > 0 && z < zmax;
+  return g;
+}
+
 double ghost_max_depth(GhostMapKind map, double k1, double k2) {
   const double inf = std::numeric_limits<double>::infinity();
   const double zmax = ghost_zeta_limit(k1, k2);

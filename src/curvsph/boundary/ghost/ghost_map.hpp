@@ -20,7 +20,8 @@
 // [0, zeta_max) and -G(-d) is increasing on [0, d_max), the density-preserving ghost exists
 // and is unique iff -G(-d) < G(zeta_max); the mirror maps need d < zeta_max (otherwise the
 // ghost lies beyond the centre of curvature and mirror_beta's beta is <= 0). Where there is
-// no root the map returns ok = false; it never returns a garbage depth.
+// no root the map returns ok = false; it never returns a garbage depth. Depths the wall
+// does not allow in front (d <= 0, or 1 - k_i d <= 0) also give ok = false.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,62 +66,73 @@ inline double ghost_fluid_depth_limit(double k1, double k2) {
   return d;
 }
 
+inline bool ghost_depth_allowed(double d, double k1, double k2) {
+  return d > 0 && 1.0 - k1 * d > 0 && 1.0 - k2 * d > 0;
+}
+
 inline GhostDepth ghost_mirror(double d, double k1, double k2) {
   GhostDepth g;
   g.depth = d;
-  g.ok = d > 0 && d < ghost_zeta_limit(k1, k2);
+  g.ok = ghost_depth_allowed(d, k1, k2) && d < ghost_zeta_limit(k1, k2);
   return g;
 }
 
 inline GhostDepth ghost_mirror_beta(double d, double k1, double k2) {
   GhostDepth g;
   g.depth = d;
-  g.ok = d > 0 && d < ghost_zeta_limit(k1, k2);
+  g.ok = ghost_depth_allowed(d, k1, k2) && d < ghost_zeta_limit(k1, k2);
   if (g.ok) g.beta = ghost_jacobian(k1, k2, d) / ghost_jacobian(k1, k2, -d);
   return g;
 }
 
-// Root of G(zeta') = -G(-d): closed form where k1 k2 = 0 (planes, 2-D walls, cylinders),
-// otherwise Newton from the quadratic estimate, safeguarded by bisection inside the bracket
-// [0, hi] (hi = zeta_max, or -G(-d) itself when every k >= 0 since then G(zeta) >= zeta).
+// Root of G(zeta') = -G(-d), safeguarded: closed form where k1 k2 = 0, otherwise Newton
+// from the quadratic estimate with a bisection fallback inside the bracket [0, hi]
+// (hi = zeta_max, or -G(-d) itself when every k >= 0 since then G(zeta) >= zeta). Reports
+// ok = false exactly when there is no root in the region the wall allows.
+GhostDepth ghost_density_preserving_safe(double d, double k1, double k2);
+
+// Same root, fast path for the common case (the hot loop of ghost placement): with the cubic
+// term moved to the right-hand side at a cheap estimate w of the root, the quadratic gives
+// a start within O(k^3 d^4) of the root; chord steps (one division) then reach round-off.
+// No convergence within five steps, or a result outside the region, hands over to the safeguarded
+// solver, so the answer is the same either way.
 inline GhostDepth ghost_density_preserving(double d, double k1, double k2) {
-  GhostDepth g;
-  if (!(d > 0)) return g;
   const double H = k1 + k2, K = k1 * k2;
-  const double target = -ghost_volume_g(k1, k2, -d);
-  const double zmax = ghost_zeta_limit(k1, k2);
-  const bool bounded = zmax < std::numeric_limits<double>::infinity();
-  if (bounded && !(target < ghost_volume_g(k1, k2, zmax))) return g;
-  // Quadratic part: H z^2/2 + z - target = 0, in the cancellation-free form.
-  const double disc = 1.0 + 2.0 * H * target;
-  double z = disc >= 0 ? 2.0 * target / (1.0 + std::sqrt(disc)) : 0.5 * zmax;
+  const double target = d * (1.0 - d * (0.5 * H - d * (K / 3.0)));  // -G(-d)
+  // Depths the wall allows in front: 1 - k_i d > 0 (closest points never lie deeper).
+  if (!(d > 0 && 1.0 - k1 * d > 0 && 1.0 - k2 * d > 0)) return GhostDepth{};
   if (K == 0.0) {
+    // Quadratic H z^2/2 + z - target = 0 in the cancellation-free form.
+    GhostDepth g;
+    const double disc = 1.0 + 2.0 * H * target;
+    const double z = 2.0 * target / (1.0 + std::sqrt(std::max(disc, 0.0)));
     g.depth = z;
-    g.ok = disc >= 0 && z > 0 && z < zmax;
+    g.ok = disc >= 0 && z > 0 && 1.0 + k1 * z > 0 && 1.0 + k2 * z > 0;
     return g;
   }
-  double lo = 0.0, hi = bounded ? zmax : target;
-  if (!(z > lo && z < hi)) z = 0.5 * (lo + hi);
-  for (int it = 0; it < 100; ++it) {
-    const double f = ghost_volume_g(k1, k2, z) - target;
-    if (f < 0)
-      lo = z;
-    else
-      hi = z;
-    const double step = f / ghost_jacobian(k1, k2, z);
-    double zn = z - step;
-    // Once the step is below 1e-8 z, Newton's quadratic convergence puts zn at round-off.
-    if (std::abs(step) <= 1e-8 * z) {
-      z = zn;
-      break;
-    }
-    if (!(zn > lo && zn < hi)) zn = 0.5 * (lo + hi);
-    if (zn == z) break;
-    z = zn;
+  const double hd = H * d;
+  const double w = d * (1.0 - hd * (1.0 - hd));  // d - H d^2 + H^2 d^3
+  const double tq = target - (K / 3.0) * w * w * w;
+  const double disc = 1.0 + 2.0 * H * tq;
+  double z = 2.0 * tq / (1.0 + std::sqrt(std::max(disc, 0.0)));
+  // Chord iteration: contracts by r = |1 - J(z)/J(z0)| per step; the error left after a
+  // step s is about r |s|, estimated from consecutive steps as s^2 / |s_prev|.
+  const double inv_j = 1.0 / ghost_jacobian(k1, k2, z);
+  double prev = 0.0;  // no estimate before the second step
+  bool converged = false;
+  for (int it = 0; it < 5 && !converged; ++it) {
+    const double step = (ghost_volume_g(k1, k2, z) - target) * inv_j;
+    z -= step;
+    converged = step == 0.0 || step * step <= 1e-16 * z * std::abs(prev);
+    prev = step;
   }
-  g.depth = z;
-  g.ok = z > 0 && z < zmax;
-  return g;
+  if (converged && disc >= 0 && z > 0 && 1.0 + k1 * z > 0 && 1.0 + k2 * z > 0) {
+    GhostDepth g;
+    g.depth = z;
+    g.ok = true;
+    return g;
+  }
+  return ghost_density_preserving_safe(d, k1, k2);
 }
 
 inline GhostDepth ghost_map(GhostMapKind map, double d, double k1, double k2) {

@@ -9,6 +9,7 @@
 static void BM_GhostCostVelaVelaTable1(benchmark::State& state) {
   curvsph::GhostCostOptions opt;
   opt.particles = static_cast<std::size_t>(state.range(0));
+  opt.repeats = static_cast<int>(state.range(1));
   curvsph::GhostCostResult res;
   for (auto _ : state) {
     res = curvsph::ghost_cost_study(opt);
@@ -20,4 +21,8 @@ static void BM_GhostCostVelaVelaTable1(benchmark::State& state) {
     state.counters["ghost_density_preserving_ms_" + s.shape] = 1e3 * s.density_preserving_s;
   }
 }
-BENCHMARK(BM_GhostCostVelaVelaTable1)->Arg(1000000)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_GhostCostVelaVelaTable1)
+    ->Args({1000000, 7})
+    ->Args({1000000, 25})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);

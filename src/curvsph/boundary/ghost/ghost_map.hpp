@@ -93,9 +93,9 @@ GhostDepth ghost_density_preserving_safe(double d, double k1, double k2);
 
 // Same root, fast path for the common case (the hot loop of ghost placement): with the cubic
 // term moved to the right-hand side at a cheap estimate w of the root, the quadratic gives
-// a start within O(k^3 d^4) of the root; chord steps (one division) then reach round-off.
-// No convergence within five steps, or a result outside the region, hands over to the safeguarded
-// solver, so the answer is the same either way.
+// a start within O(k^3 d^4) of the root; a Halley step (and, for deep particles, chord\n// steps)
+// then reach round-off. No convergence within five steps, or a result outside the region, hands
+// over to the safeguarded solver, so the answer is the same either way.
 inline GhostDepth ghost_density_preserving(double d, double k1, double k2) {
   const double H = k1 + k2, K = k1 * k2;
   const double target = d * (1.0 - d * (0.5 * H - d * (K / 3.0)));  // -G(-d)
@@ -110,21 +110,35 @@ inline GhostDepth ghost_density_preserving(double d, double k1, double k2) {
     g.ok = disc >= 0 && z > 0 && 1.0 + k1 * z > 0 && 1.0 + k2 * z > 0;
     return g;
   }
+  if (k1 == k2) {
+    // Umbilic point (sphere): G = ((1 + k z)^3 - 1)/(3k), so with c = cbrt(1 + 3 k target),
+    // z = (c - 1)/k = 3 target/(c^2 + c + 1) (Vela Vela eq. 25, cancellation-free).
+    GhostDepth g;
+    const double c = std::cbrt(1.0 + 3.0 * k1 * target);
+    g.depth = 3.0 * target / (c * c + c + 1.0);
+    g.ok = 1.0 + 3.0 * k1 * target > 0 && 1.0 + k1 * g.depth > 0;
+    return g;
+  }
   const double hd = H * d;
   const double w = d * (1.0 - hd * (1.0 - hd));  // d - H d^2 + H^2 d^3
   const double tq = target - (K / 3.0) * w * w * w;
   const double disc = 1.0 + 2.0 * H * tq;
   double z = 2.0 * tq / (1.0 + std::sqrt(std::max(disc, 0.0)));
-  // Chord iteration: contracts by r = |1 - J(z)/J(z0)| per step; the error left after a
-  // step s is about r |s|, estimated from consecutive steps as s^2 / |s_prev|.
-  const double inv_j = 1.0 / ghost_jacobian(k1, k2, z);
-  double prev = 0.0;  // no estimate before the second step
-  bool converged = false;
+  // One Halley step (cubic convergence): the error left after a step s is about C s^3 with
+  // C = (J'/2J)^2 + |K|/3 (J'' = 2K). Most particles stop here; the rest continue with chord
+  // steps, whose error after a step s is about (|J'|/J) |z - z0| |s| (z0: where J was taken).
+  const double z0 = z;
+  const double j = ghost_jacobian(k1, k2, z), jp = H + 2.0 * K * z;
+  const double f = ghost_volume_g(k1, k2, z) - target;
+  double step = 2.0 * f * j / (2.0 * j * j - f * jp);
+  z -= step;
+  const double c = 0.25 * (jp * jp) / (j * j) + std::abs(K) / 3.0;
+  bool converged = std::abs(step) <= 1e-3 * z && c * std::abs(step * step * step) <= 1e-16 * z;
+  const double inv_j = 1.0 / j, rate = std::abs(jp) * inv_j;
   for (int it = 0; it < 5 && !converged; ++it) {
-    const double step = (ghost_volume_g(k1, k2, z) - target) * inv_j;
+    step = (ghost_volume_g(k1, k2, z) - target) * inv_j;
     z -= step;
-    converged = step == 0.0 || step * step <= 1e-16 * z * std::abs(prev);
-    prev = step;
+    converged = step == 0.0 || rate * std::abs((z - z0) * step) <= 1e-16 * z;
   }
   if (converged && disc >= 0 && z > 0 && 1.0 + k1 * z > 0 && 1.0 + k2 * z > 0) {
     GhostDepth g;

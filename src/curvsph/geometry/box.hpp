@@ -27,7 +27,7 @@ class BoxWall final : public Wall<D> {
   WallPoint<D> closest(const VecD<D>& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override;
-  // Geometry, for discretisations (boundary elements).
+  // The box itself, for discretisations (boundary elements) and face-by-face ghosts.
   const VecD<D>& min() const { return min_; }
   const VecD<D>& max() const { return max_; }
   FluidSide side() const { return side_; }

@@ -1,0 +1,282 @@
+#include "curvsph/boundary/ghost/ghosts.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "curvsph/core/error.hpp"
+#include "curvsph/geometry/box.hpp"
+
+namespace curvsph {
+
+const char* to_string(GhostVelocity m) {
+  return m == GhostVelocity::free_slip ? "free_slip" : "no_slip";
+}
+
+GhostVelocity parse_ghost_velocity(const std::string& name, const std::string& file,
+                                   const std::string& key) {
+  if (name == "no_slip") return GhostVelocity::no_slip;
+  if (name == "free_slip") return GhostVelocity::free_slip;
+  throw InputError(
+      file, key, fmt::format("unknown ghost velocity '{}' (expected no_slip or free_slip)", name));
+}
+
+namespace {
+
+// A flat reflection available for corner combinations.
+template <int D>
+struct FlatFace {
+  VecD<D> foot, normal;
+  std::int32_t wall;
+};
+
+template <int D>
+VecD<D> ghost_velocity(GhostVelocity mode, const VecD<D>& u, const VecD<D>& uw, const VecD<D>& n,
+                       double ratio) {
+  if (mode == GhostVelocity::no_slip) return uw - ratio * (u - uw);
+  const VecD<D> rel = u - uw;
+  return uw + rel - 2.0 * rel.dot(n) * n;
+}
+
+template <int D>
+struct Generator {
+  const WallSet<D>& walls;
+  const std::vector<const BoxWall<D>*>& boxes;
+  const GhostOptions<D>& opt;
+
+  using Record = typename GhostSet<D>::Record;
+
+  void emit(std::vector<Record>& out, Index i, std::int32_t wall, const VecD<D>& xg,
+            const VecD<D>& ug, double beta, double depth, double d, const VecD<D>& foot,
+            const VecD<D>& n, std::uint8_t reflections) const {
+    Record r;
+    r.x = xg.template cast<Real>();
+    if (opt.cells) opt.cells->wrap(r.x);
+    r.v = ug.template cast<Real>();
+    r.beta = static_cast<Real>(beta);
+    r.source = i;
+    r.wall = wall;
+    r.depth = depth;
+    r.source_depth = d;
+    r.foot = foot;
+    r.normal = n;
+    r.reflections = reflections;
+    out.push_back(r);
+  }
+
+  // Reflects (x, u) across the flat faces listed in `set` in turn and emits the result.
+  void emit_corner(std::vector<Record>& out, Index i, const VecD<D>& x0, const VecD<D>& u0,
+                   const FlatFace<D>* const* set, int count) const {
+    VecD<D> x = x0, u = u0, foot = x0, n = x0;
+    double d = 0;
+    for (int r = 0; r < count; ++r) {
+      n = set[r]->normal;
+      d = (x - set[r]->foot).dot(n);
+      foot = x - d * n;
+      const VecD<D> uw = walls[set[r]->wall].motion.velocity_at(foot);
+      u = ghost_velocity<D>(opt.velocity, u, uw, n, 1.0);
+      x = foot - d * n;
+    }
+    emit(out, i, set[count - 1]->wall, x, u, 1.0, d, d, foot, n, static_cast<std::uint8_t>(count));
+  }
+
+  // Returns {penetrated, no_root}.
+  std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
+                                 std::vector<Record>& out) const {
+    constexpr int kMaxFlat = 12;
+    std::array<FlatFace<D>, kMaxFlat> flat;
+    int nflat = 0;
+    bool penetrated = false, no_root = false;
+    const VecD<D> x = xi.template cast<double>();
+    const VecD<D> u = vi.template cast<double>();
+    const double support = opt.support;
+    const std::int32_t nwalls = static_cast<std::int32_t>(walls.size());
+
+    for (std::int32_t k = 0; k < nwalls; ++k) {
+      if (const BoxWall<D>* box = boxes[k]) {
+        // Fluid inside a box: face by face.
+        const VecD<D>& lo = box->min();
+        const VecD<D>& hi = box->max();
+        bool out_of_box = false;
+        for (int a = 0; a < D; ++a) out_of_box |= !(x[a] > lo[a] && x[a] < hi[a]);
+        if (out_of_box) {
+          penetrated = true;
+          continue;
+        }
+        for (int a = 0; a < D; ++a) {
+          for (int s = 0; s < 2; ++s) {
+            const double d = s == 0 ? x[a] - lo[a] : hi[a] - x[a];
+            if (!(d < support)) continue;
+            VecD<D> foot = x;
+            foot[a] = s == 0 ? lo[a] : hi[a];
+            const VecD<D> n = VecD<D>::Unit(a) * (s == 0 ? 1.0 : -1.0);
+            const VecD<D> uw = box->motion.velocity_at(foot);
+            emit(out, i, k, foot - d * n, ghost_velocity<D>(opt.velocity, u, uw, n, 1.0), 1.0, d, d,
+                 foot, n, 1);
+            if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k};
+          }
+        }
+        continue;
+      }
+      const WallPoint<D> p = walls[k].closest(x);
+      if (!(p.distance > 0)) {
+        penetrated = true;
+        continue;
+      }
+      if (!(p.distance < support)) continue;
+      const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
+      if (!g.ok) {
+        no_root = true;
+        continue;
+      }
+      const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
+      emit(out, i, k, p.foot - g.depth * p.normal,
+           ghost_velocity<D>(opt.velocity, u, uw, p.normal, g.depth / p.distance), g.beta, g.depth,
+           p.distance, p.foot, p.normal, 1);
+      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat) flat[nflat++] = {p.foot, p.normal, k};
+    }
+
+    // Corners: mutually perpendicular flat reflections.
+    if (nflat >= 2) {
+      auto perpendicular = [&](int a, int b) {
+        return std::abs(flat[a].normal.dot(flat[b].normal)) < 1e-9;
+      };
+      for (int a = 0; a < nflat; ++a)
+        for (int b = a + 1; b < nflat; ++b) {
+          if (!perpendicular(a, b)) continue;
+          const FlatFace<D>* pair[2] = {&flat[a], &flat[b]};
+          emit_corner(out, i, x, u, pair, 2);
+          if constexpr (D == 3) {
+            for (int c = b + 1; c < nflat; ++c) {
+              if (!perpendicular(a, c) || !perpendicular(b, c)) continue;
+              const FlatFace<D>* triple[3] = {&flat[a], &flat[b], &flat[c]};
+              emit_corner(out, i, x, u, triple, 3);
+            }
+          }
+        }
+    }
+    return {penetrated, no_root};
+  }
+};
+
+}  // namespace
+
+template <int D>
+void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>>& v_f,
+                        const WallSet<D>& walls, const GhostOptions<D>& options) {
+  boxes_.resize(walls.size());
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const auto* box = dynamic_cast<const BoxWall<D>*>(&walls[k]);
+    boxes_[k] = box && box->side() == FluidSide::inside ? box : nullptr;
+  }
+  const int max_threads = omp_get_max_threads();
+  if (static_cast<int>(thread_ghosts_.size()) < max_threads) {
+    thread_ghosts_.resize(max_threads);
+    thread_penetrated_.resize(max_threads);
+    thread_no_root_.resize(max_threads);
+  }
+  offsets_.resize(max_threads + 1);
+  const Generator<D> gen{walls, boxes_, options};
+  const Index n = static_cast<Index>(x_f.size());
+  int used_threads = 1;
+
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+    const int T = omp_get_num_threads();
+    // Contiguous blocks in thread order: concatenating the blocks keeps particle order.
+    const Index begin = n * t / T, end = n * (t + 1) / T;
+    auto& buf = thread_ghosts_[t];
+    auto& pen = thread_penetrated_[t];
+    auto& nor = thread_no_root_[t];
+    buf.clear();
+    pen.clear();
+    nor.clear();
+    for (Index i = begin; i < end; ++i) {
+      const auto [p, r] = gen.particle(i, x_f[i], v_f[i], buf);
+      if (p) pen.push_back(i);
+      if (r) nor.push_back(i);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      used_threads = T;
+      offsets_[0] = 0;
+      for (int k = 0; k < T; ++k) offsets_[k + 1] = offsets_[k] + thread_ghosts_[k].size();
+      const std::size_t m = offsets_[T];
+      x.resize(m);
+      v.resize(m);
+      beta.resize(m);
+      source.resize(m);
+      wall.resize(m);
+      depth.resize(m);
+      source_depth.resize(m);
+      foot.resize(m);
+      normal.resize(m);
+      reflections.resize(m);
+    }
+    std::size_t o = offsets_[t];
+    for (const Record& r : buf) {
+      x[o] = r.x;
+      v[o] = r.v;
+      beta[o] = r.beta;
+      source[o] = r.source;
+      wall[o] = r.wall;
+      depth[o] = r.depth;
+      source_depth[o] = r.source_depth;
+      foot[o] = r.foot;
+      normal[o] = r.normal;
+      reflections[o] = r.reflections;
+      ++o;
+    }
+  }
+  penetrated.clear();
+  no_root.clear();
+  for (int k = 0; k < used_threads; ++k) {
+    penetrated.insert(penetrated.end(), thread_penetrated_[k].begin(), thread_penetrated_[k].end());
+    no_root.insert(no_root.end(), thread_no_root_[k].begin(), thread_no_root_[k].end());
+  }
+}
+
+template <int D>
+void check_ghost_walls(GhostMapKind map, const WallSet<D>& walls, Real support,
+                       const std::vector<Vec<D>>& x_f, const std::string& file) {
+  const Index n = static_cast<Index>(x_f.size());
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const Wall<D>& w = walls[k];
+    const std::string key = fmt::format("walls.{}", k);
+    const double rmin = w.min_radius_of_curvature();
+    if (n == 0) {
+      // No sample: the convex worst case of the smallest radius of curvature.
+      const double kk = rmin < std::numeric_limits<double>::infinity() ? -1.0 / rmin : 0.0;
+      check_ghost_support(map, kk, D == 3 ? kk : 0.0, support, rmin, w.describe(), file, key);
+      continue;
+    }
+    // The tightest sample: the one whose largest admissible depth is smallest.
+    std::vector<double> dmax(n);
+    std::vector<std::array<double, 2>> kappa(n);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      const WallPoint<D> p = w.closest(x_f[i].template cast<double>());
+      kappa[i] = {p.k1, p.k2};
+      dmax[i] = ghost_max_depth(map, p.k1, p.k2);
+    }
+    Index worst = 0;
+    for (Index i = 1; i < n; ++i)
+      if (dmax[i] < dmax[worst]) worst = i;
+    check_ghost_support(map, kappa[worst][0], kappa[worst][1], support, rmin, w.describe(), file,
+                        key);
+  }
+}
+
+template class GhostSet<2>;
+template class GhostSet<3>;
+template void check_ghost_walls<2>(GhostMapKind, const WallSet<2>&, Real,
+                                   const std::vector<Vec<2>>&, const std::string&);
+template void check_ghost_walls<3>(GhostMapKind, const WallSet<3>&, Real,
+                                   const std::vector<Vec<3>>&, const std::string&);
+
+}  // namespace curvsph

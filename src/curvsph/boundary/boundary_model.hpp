@@ -34,6 +34,9 @@ class BoundaryModel {
  public:
   virtual ~BoundaryModel() = default;
   virtual std::string name() const = 0;
+  // Set-up checks on the initial particles (e.g. the ghost map has a root for every particle
+  // the walls can see); throws InputError naming the wall.
+  virtual void check_setup(const Particles<D>& /*P*/, const std::string& /*file*/) {}
   // Per step, at the new positions; t is the time of those positions (moving walls).
   virtual void prepare(const Particles<D>& P, Real t) = 0;
   virtual void add_density(Particles<D>& P) = 0;

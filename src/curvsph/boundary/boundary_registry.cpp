@@ -1,5 +1,6 @@
 // The table of boundary treatments: one line per method.
 #include "curvsph/boundary/boundary_model.hpp"
+#include "curvsph/boundary/ghost/ghost_boundary.hpp"
 #include "curvsph/core/error.hpp"
 
 namespace curvsph {
@@ -13,7 +14,9 @@ struct MethodEntry {
 
 template <int D>
 const std::vector<MethodEntry<D>>& methods() {
-  static const std::vector<MethodEntry<D>> table = {};
+  static const std::vector<MethodEntry<D>> table = {
+      {"ghost", &make_ghost_boundary<D>},
+  };
   return table;
 }
 

@@ -58,6 +58,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (!c.initial_field.empty())
     apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
   boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
+  if (boundary_) boundary_->check_setup(P_, c.file_name());
 }
 
 template <int D>

@@ -1,0 +1,122 @@
+#include "curvsph/boundary/ghost/ghost_boundary.hpp"
+
+#include "curvsph/boundary/ghost/ghosts.hpp"
+#include "curvsph/core/parallel.hpp"
+
+namespace curvsph {
+namespace {
+
+template <int D>
+class GhostBoundary final : public BoundaryModel<D> {
+ public:
+  explicit GhostBoundary(const BoundaryContext<D>& ctx)
+      : walls_(ctx.walls), W_(ctx.kernel), F_(ctx.fluid), fluid_cells_(ctx.cells) {
+    const Case& c = ctx.spec;
+    options_.map = parse_ghost_map(c.boundary.map, c.file_name(), "boundary.map");
+    options_.velocity = parse_ghost_velocity(c.boundary.velocity, c.file_name(), "boundary.velocity");
+    options_.support = W_.support;
+    options_.cells = &fluid_cells_;
+    Vec3d lo = c.domain_min, hi = c.domain_max;
+    cells_.configure(W_.support, lo, hi, c.periodic);
+  }
+
+  std::string name() const override { return "ghost"; }
+
+  void check_setup(const Particles<D>& P, const std::string& file) override {
+    check_ghost_walls<D>(options_.map, walls_, W_.support, P.x, file);
+  }
+
+  void prepare(const Particles<D>& P, Real /*t*/) override {
+    G_.build(P.x, P.v, walls_, options_);
+    cells_.build(G_.x);
+  }
+
+  // Barker eq. 20: sigma_i += sum_g beta_g W_ig.
+  void add_density(Particles<D>& P) override {
+    if (G_.size() == 0) return;
+    parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+      Real s = 0;
+      cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>&, Real r2) {
+        s += G_.beta[g] * W_.value(std::sqrt(r2));
+      });
+      if (s == 0) return;
+      P.sigma[i] += s;
+      P.rho[i] = P.mass[i] * P.sigma[i];
+    });
+  }
+
+  // Ghost terms of the continuity equation; the diffusive term sees the ghost's density
+  // (its source's) with the source particle's own renormalised gradient left out.
+  void add_density_rate(Particles<D>& P) override {
+    if (G_.size() == 0) return;
+    const Real delta_h_c0 = F_.delta_sph * W_.h * F_.eos.c0;
+    parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+      Real div = 0, diff = 0;
+      cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
+        const Index s = G_.source[g];
+        const Real f = W_.gradient_factor(std::sqrt(r2));
+        const Real Vg = P.mass[s] / (P.rho[s] * G_.beta[g]);
+        div += Vg * f * (P.v[i] - G_.v[g]).dot(r);
+        diff += Vg * f * (-2 * (P.rho[s] - P.rho[i]));
+      });
+      P.drho[i] += P.rho[i] * div + delta_h_c0 * diff;
+    });
+  }
+
+  // Pressure and viscous terms with the ghost as neighbour j (momentum.hpp's formulas):
+  // sigma_g = sigma_s beta_g (Barker eq. 22), p_g = p_s.
+  void add_accelerations(Particles<D>& P) override {
+    if (G_.size() == 0) return;
+    parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+      const Real si = P.sigma[i];
+      const Real inv_si2 = 1 / (si * si);
+      const Real pi_s2 = P.p[i] * inv_si2;
+      const Real mu = F_.viscosity[P.phase[i]];
+      Vec<D> grad_p = Vec<D>::Zero(), visc = Vec<D>::Zero();
+      bool any = false;
+      cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
+        const Index s = G_.source[g];
+        const Real f = W_.gradient_factor(std::sqrt(r2));
+        const Real sg = P.sigma[s] * G_.beta[g];
+        const Real inv_sg2 = 1 / (sg * sg);
+        grad_p += (P.p[s] * inv_sg2 + pi_s2) * f * r;
+        visc += (inv_sg2 + inv_si2) * f * (P.v[i] - G_.v[g]);
+        any = true;
+      });
+      if (!any) return;
+      const Real inv_m = 1 / P.mass[i];
+      P.a[i] += -inv_m * grad_p + mu * inv_m * visc;
+    });
+  }
+
+  const std::vector<Index>& penetrated() const override { return G_.penetrated; }
+
+  void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override {
+    x.insert(x.end(), G_.x.begin(), G_.x.end());
+    kind.insert(kind.end(), G_.size(), 1);
+  }
+
+  const GhostSet<D>& ghosts() const { return G_; }
+
+ private:
+  const WallSet<D>& walls_;
+  const WendlandC2<D>& W_;
+  const FluidParams<D>& F_;
+  const CellList<D>& fluid_cells_;
+  GhostOptions<D> options_;
+  GhostSet<D> G_;
+  CellList<D> cells_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<BoundaryModel<D>> make_ghost_boundary(const BoundaryContext<D>& ctx) {
+  auto m = std::make_unique<GhostBoundary<D>>(ctx);
+  return m;
+}
+
+template std::unique_ptr<BoundaryModel<2>> make_ghost_boundary<2>(const BoundaryContext<2>&);
+template std::unique_ptr<BoundaryModel<3>> make_ghost_boundary<3>(const BoundaryContext<3>&);
+
+}  // namespace curvsph

@@ -74,9 +74,25 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || !c.write_vtk) return;
     const auto t0 = std::chrono::steady_clock::now();
+    const int index = snapshot;
     const std::string file = name.empty() ? fmt::format("particles_{:06d}.vtp", snapshot++) : name;
     io::write_vtp(o.out_dir / file, solver.particles());
     series.add(solver.time(), file);
+    // Ghosts / wall elements as a second block of the series (kind: 1 ghost, 2 element).
+    if (const auto* b = solver.boundary()) {
+      std::vector<Vec<D>> bx;
+      std::vector<int> kind;
+      b->append_output(bx, kind);
+      if (!bx.empty()) {
+        io::VtkPolyData poly;
+        poly.set_points(bx);
+        poly.add_scalar("kind", std::vector<std::int32_t>(kind.begin(), kind.end()));
+        const std::string bfile = name.empty() ? fmt::format("boundary_{:06d}.vtp", index)
+                                               : "boundary_" + name;
+        poly.write(o.out_dir / bfile);
+        series.add(solver.time(), bfile, 1);
+      }
+    }
     last_snapshot_time = solver.time();
     solver.phase_times().output +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

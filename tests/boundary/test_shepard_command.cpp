@@ -1,6 +1,8 @@
 // The built `curvsph shepard` binary on a small circle case: columns, the values of every
 // mode, and exit code 2 with a clear message for bad arguments.
 #include <gtest/gtest.h>
+
+#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,40 +16,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ShepardCommand : public ::testing::Test {
+class ShepardCommand : public curvsph::testing::CommandTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("curvsph_shepard_cmd_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    CommandTest::SetUp();
     geom_ = write("circle.yaml",
                   "dimension: 2\nwalls:\n  - {shape: circle, center: [0, 0], radius: 2, "
                   "fluid: inside}\n");
     // Centre, on the wall, 0.1h inside the wall (h = 0.05).
     points_ = write("p.csv", "x,y\n0,0\n2,0\n0,-1.995\n");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  int run(const std::string& args) {
-    const std::string cmd = std::string(CURVSPH_BINARY) + " shepard " + args + " >" +
-                            (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
-    const int status = std::system(cmd.c_str());
-    out_ = read(dir_ / "stdout");
-    err_ = read(dir_ / "stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  int run(const std::string& args) { return run_curvsph("shepard " + args); }
   // gamma column of the CSV text, after checking the header.
   static std::vector<double> gammas(const std::string& text) {
     std::istringstream in(text);
@@ -62,8 +41,7 @@ class ShepardCommand : public ::testing::Test {
     return geom_.string() + " --points " + points_.string() + " --h 0.05 --dx 0.025 --mode " + mode;
   }
 
-  fs::path dir_, geom_, points_;
-  std::string out_, err_;
+  fs::path geom_, points_;
 };
 
 TEST_F(ShepardCommand, CircleAllModes) {

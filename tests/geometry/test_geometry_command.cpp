@@ -1,6 +1,8 @@
 // The built `curvsph geometry` binary: columns and values of its CSV, and exit code 2 with
 // the file, key or line named for bad input.
 #include <gtest/gtest.h>
+
+#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,39 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class GeometryCommand : public ::testing::Test {
+class GeometryCommand : public curvsph::testing::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("curvsph_geometry_cmd_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  // Runs `curvsph geometry ARGS`; returns the exit code, fills stdout and stderr.
-  int run(const std::string& args) {
-    const std::string cmd = std::string(CURVSPH_BINARY) + " geometry " + args + " >" +
-                            (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
-    const int status = std::system(cmd.c_str());
-    out_ = read(dir_ / "stdout");
-    err_ = read(dir_ / "stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-
-  fs::path dir_;
-  std::string out_, err_;
+  int run(const std::string& args) { return run_curvsph("geometry " + args); }
 };
 
 std::vector<std::vector<std::string>> parse_csv(const std::string& text) {

@@ -2,6 +2,8 @@
 // overrides (list elements by index, new nested keys), YAML syntax errors name the line, and
 // the built `curvsph run` exits with 2 on bad input and 3 (with a last snapshot) when unstable.
 #include <gtest/gtest.h>
+
+#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -288,40 +290,9 @@ TEST(CaseFile, SetNewNestedValueTakesEffect) {
 }
 
 // Files on disk: YAML syntax errors, overrides through read_case(path, sets), the binary.
-class CaseFileOnDisk : public ::testing::Test {
+class CaseFileOnDisk : public curvsph::testing::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("curvsph_case_file_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  // Runs `curvsph ARGS`; returns the exit code, fills stdout and stderr.
-  int run(const std::string& args) {
-    const std::string cmd = std::string(CURVSPH_BINARY) + " " + args + " >" +
-                            (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
-    const int status = std::system(cmd.c_str());
-    out_ = read(dir_ / "stdout");
-    err_ = read(dir_ / "stderr");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-
-  fs::path dir_;
-  std::string out_, err_;
+  int run(const std::string& args) { return run_curvsph(args); }
 };
 
 TEST_F(CaseFileOnDisk, YamlSyntaxErrorNamesTheLine) {
@@ -394,15 +365,16 @@ TEST_F(CaseFileOnDisk, RunExitsWith2AndNamesFileAndKey) {
   EXPECT_NE(err_.find("absent.yaml"), std::string::npos) << err_;
 }
 
-// Taylor–Green at a coarse resolution (400 particles) with a speed of sound equal to the flow
-// speed: the flow compresses, and the density leaves [0.5, 2] rho0 after about 20 steps.
+// Taylor–Green at a coarse resolution (400 particles) with a flow speed of the sound speed
+// (U = 10 = c0): the flow compresses, and the density leaves [0.5, 2] rho0 after ~15 steps.
 // Must exit 3, name the step and particle, and leave particles_unstable.vtp.
 TEST_F(CaseFileOnDisk, UnstableRunExitsWith3AndLeavesSnapshot) {
   const fs::path tg = fs::path(CURVSPH_SOURCE_DIR) / "cases" / "taylor_green_2d.yaml";
   ASSERT_TRUE(fs::exists(tg));
   const fs::path out = dir_ / "out";
   const int code = run("run " + tg.string() + " --out " + out.string() +
-                       " --quiet --threads 1 --set eos.c0=1.0 --set resolution.dx=0.05"
+                       " --quiet --threads 1 --set initial.taylor_green.U=10"
+                       " --set analysis.taylor_green.U=10 --set resolution.dx=0.05"
                        " --set output.every=10");
   EXPECT_EQ(code, 3) << err_ << out_;
   EXPECT_NE(err_.find("unstable"), std::string::npos) << err_;

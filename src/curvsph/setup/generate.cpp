@@ -25,6 +25,26 @@ void lattice(const Vec3d& lo, const Vec3d& hi, int dim, double dx, Inside inside
       }
 }
 
+// Whether x lies in the region (first dim axes); inside_walls regions hold every point.
+bool region_contains(const RegionSpec& r, int dim, const Vec3d& x) {
+  double d2 = 0;
+  for (int d = 0; d < dim; ++d) d2 += (x[d] - r.center[d]) * (x[d] - r.center[d]);
+  switch (r.kind) {
+    case RegionSpec::Kind::box:
+      for (int d = 0; d < dim; ++d)
+        if (x[d] < r.min[d] || x[d] >= r.max[d]) return false;
+      return true;
+    case RegionSpec::Kind::disk:
+    case RegionSpec::Kind::ball:
+      return d2 < r.radius * r.radius;
+    case RegionSpec::Kind::annulus:
+      return d2 >= r.r_in * r.r_in && d2 < r.r_out * r.r_out;
+    case RegionSpec::Kind::inside_walls:
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double dx,
@@ -101,15 +121,25 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
     } else {
       pts = generate_region(c.fluids[f].region, D, c.dx, c.file_name(), key);
     }
+    // Fluids are painted in list order: a later fluid's region takes its points from the
+    // earlier ones (a droplet listed after the surrounding fluid).
+    auto claimed_later = [&](const Vec3d& x) {
+      for (std::size_t g = f + 1; g < c.fluids.size(); ++g)
+        if (c.fluids[g].region.kind != RegionSpec::Kind::inside_walls &&
+            region_contains(c.fluids[g].region, D, x))
+          return true;
+      return false;
+    };
     std::size_t kept = 0;
     for (const auto& p : pts)
-      if (walls.empty() || wet(p.x)) {
+      if (!claimed_later(p.x) && (walls.empty() || wet(p.x))) {
         all.push_back(p);
         ++kept;
       }
     if (kept == 0)
       throw InputError(c.file_name(), key,
-                       "no particle of this region lies on the fluid side of the walls");
+                       "no particle of this region is left (all on the far side of a wall or "
+                       "inside the regions of fluids listed after it)");
     phase.insert(phase.end(), kept, static_cast<int>(f));
   }
   P.resize(all.size());

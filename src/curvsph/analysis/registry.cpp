@@ -1,5 +1,6 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
+#include "curvsph/analysis/static_droplet.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/core/error.hpp"
 
@@ -16,9 +17,10 @@ struct Entry {
 
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
+    {"static_droplet", &make_static_droplet_analysis<2>, nullptr},
 };
 const Entry<3> kEntries3[] = {
-    {"", nullptr, nullptr},
+    {"static_droplet", &make_static_droplet_analysis<3>, nullptr},
 };
 
 template <int D>

@@ -213,7 +213,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   const Keys top(root, file, "");
   top.allow({"name", "dimension", "resolution", "domain", "fluids", "eos", "density", "gravity",
              "forcing", "walls", "boundary", "setup", "time", "output", "probes", "analysis",
-             "initial"});
+             "initial", "surface_tension"});
   c.name = top.text("name", path.stem().string());
   const long dim = top.integer("dimension");
   if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
@@ -292,6 +292,33 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
       c.drive = true;
       c.drive_v0 = drv.number("v0");
       c.drive_tau = drv.positive("tau");
+    }
+  }
+
+  if (top.has("surface_tension")) {
+    const YAML::Node st = top.raw("surface_tension");
+    if (!st.IsSequence())
+      top.fail("surface_tension", "must be a list of {fluids: [a, b], coefficient}");
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      const Keys e(st[k], file, "surface_tension." + std::to_string(k));
+      e.allow({"fluids", "coefficient"});
+      SurfaceTensionSpec s;
+      s.coefficient = e.non_negative("coefficient");
+      const YAML::Node names = e.raw("fluids");
+      if (!names || !names.IsSequence() || names.size() != 2)
+        e.fail(e.key("fluids"), "must name two fluids: [a, b]");
+      int idx[2] = {-1, -1};
+      for (int m = 0; m < 2; ++m) {
+        const std::string nm = names[m].IsScalar() ? names[m].as<std::string>() : "";
+        for (std::size_t f = 0; f < c.fluids.size(); ++f)
+          if (c.fluids[f].name == nm) idx[m] = static_cast<int>(f);
+        if (idx[m] < 0)
+          e.fail(e.key("fluids") + "." + std::to_string(m), "'" + nm + "' is not a fluid name");
+      }
+      if (idx[0] == idx[1]) e.fail(e.key("fluids"), "needs two different fluids");
+      s.fluid_a = idx[0];
+      s.fluid_b = idx[1];
+      c.surface_tension.push_back(s);
     }
   }
 

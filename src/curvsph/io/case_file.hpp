@@ -57,6 +57,11 @@ struct ProbeSpec {
   std::vector<std::string> fields;  // point: p, rho, vel
 };
 
+struct SurfaceTensionSpec {
+  int fluid_a = 0, fluid_b = 1;  // indices into Case::fluids
+  double coefficient = 0;        // N/m
+};
+
 struct Case {
   std::filesystem::path file;  // the case file (for messages and relative paths)
   YAML::Node root;             // the tree after overrides (walls, analysis read it later)
@@ -71,6 +76,7 @@ struct Case {
   EosSpec eos;
   DensitySpec density;
   Vec3d gravity = Vec3d::Zero();
+  std::vector<SurfaceTensionSpec> surface_tension;
   bool drive = false;
   double drive_v0 = 0, drive_tau = 1;
   BoundarySpec boundary;

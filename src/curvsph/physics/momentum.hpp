@@ -1,7 +1,9 @@
 #pragma once
 // Fluid-fluid pair terms of one force pass (DESIGN.md §4, Barker eqs. 9–11):
 //   grad p_i / rho_i = (1/m_i) sum_j (p_j/sigma_j^2 + p_i/sigma_i^2) grad_i W_ij
-//   mu lap u_i / rho_i = (mu/m_i) sum_j (1/sigma_j^2 + 1/sigma_i^2) (u_i - u_j) (1/r) dW/dr
+//   mu lap u_i / rho_i = (1/m_i) sum_j mu_ij (1/sigma_j^2 + 1/sigma_i^2) (u_i - u_j) (1/r) dW/dr
+// with mu_ij = 2 mu_i mu_j / (mu_i + mu_j) between fluids of different viscosity (Hu & Adams
+// 2006: keeps the pair force antisymmetric and the shear stress continuous at interfaces).
 // Gather form: each particle sums over its
 // own neighbours, so threads never write to the same particle.
 #include <vector>
@@ -31,7 +33,7 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
     const Real si = P.sigma[i];
     const Real inv_si2 = 1 / (si * si);
     const Real pi_s2 = P.p[i] * inv_si2;
-    const Real mu = F.viscosity[P.phase[i]];
+    const Real mu_i = F.viscosity[P.phase[i]];
     Vec<D> grad_p = Vec<D>::Zero();
     Vec<D> visc = Vec<D>::Zero();
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
@@ -40,10 +42,12 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
       const Real sj = P.sigma[j];
       const Real inv_sj2 = 1 / (sj * sj);
       grad_p += (P.p[j] * inv_sj2 + pi_s2) * f * r;
-      visc += (inv_sj2 + inv_si2) * f * (P.v[i] - P.v[j]);
+      const Real mu_j = F.viscosity[P.phase[j]];
+      const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
+      visc += mu_ij * (inv_sj2 + inv_si2) * f * (P.v[i] - P.v[j]);
     });
     const Real inv_m = 1 / P.mass[i];
-    P.a[i] = -inv_m * grad_p + mu * inv_m * visc;
+    P.a[i] = -inv_m * grad_p + inv_m * visc;
   });
 }
 

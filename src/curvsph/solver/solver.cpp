@@ -10,6 +10,7 @@
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
+#include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/generate.hpp"
 #include "curvsph/analysis/analysis.hpp"
 
@@ -114,6 +115,11 @@ void Solver<D>::compute_rates(Real dt_rho) {
   {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_);
+    for (const auto& st : case_.surface_tension)
+      add_surface_tension(P_, cells_, W_,
+                          SurfaceTensionPair{st.fluid_a, st.fluid_b,
+                                             static_cast<Real>(st.coefficient)},
+                          surface_scratch_);
   }
   if (boundary_) {
     Stopwatch sw{times_.boundary};

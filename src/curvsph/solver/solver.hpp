@@ -11,6 +11,7 @@
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
+#include "curvsph/physics/surface_tension.hpp"
 
 namespace curvsph {
 
@@ -65,6 +66,7 @@ class Solver {
   std::unique_ptr<BoundaryModel<D>> boundary_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
+  SurfaceTensionScratch<D> surface_scratch_;
   std::vector<Vec<D>> shift_, shift_dv_;
   std::vector<Real> shift_drho_;
   std::vector<std::size_t> order_;

@@ -118,7 +118,7 @@ TEST(CouetteRun, VolumeFactorReducesDensityErrorAtT0) {
 }
 
 TEST(CouetteRun, ShortRotatingRunStaysNearAnalyticProfile) {
-  const auto m = run_quiet("couette.yaml", {"resolution.dx=2e-3", "time.end=0.3"});
+  const auto m = run_quiet("couette.yaml", {"resolution.dx=1.875e-3", "time.end=0.3"});
   ASSERT_TRUE(m.contains("velocity_l2_error"));
   const double e = m["velocity_l2_error"];
   EXPECT_GT(e, 0.0);
@@ -138,9 +138,9 @@ TEST(CouetteRun, ReferenceFollowsTheCaseWalls) {
 }
 
 TEST(PoiseuilleRun, ConvergesTowardParabola) {
-  // 10 particles across, from rest: the error falls as the start-up modes decay.
-  const std::vector<std::string> coarse = {"resolution.dx=1e-4", "domain.max=[6e-4, 1e-3]",
-                                           "fluids.0.region.box.max=[6e-4, 1e-3]"};
+  // 10 particles across (h = 2 dx), from rest: the error falls as the start-up modes decay.
+  const std::vector<std::string> coarse = {"resolution.dx=1e-4", "domain.max=[1.6e-3, 1e-3]",
+                                           "fluids.0.region.box.max=[1.6e-3, 1e-3]"};
   auto at = [&](double t) {
     auto o = coarse;
     o.push_back("time.end=" + std::to_string(t));
@@ -148,7 +148,7 @@ TEST(PoiseuilleRun, ConvergesTowardParabola) {
   };
   const double early = at(0.1), late = at(1.0);
   EXPECT_LT(late, early / 5);
-  EXPECT_LT(late, 0.03);
+  EXPECT_LT(late, 0.05);
 }
 
 }  // namespace

@@ -72,14 +72,15 @@ void prune(const fs::path& dir) {
 
 StudyResult run_couette_study(const StudyContext& ctx) {
   const Runner runner{ctx, ctx.source_dir / "cases" / "couette.yaml"};
-  const std::vector<double> dxs = ctx.quick ? std::vector<double>{2.0e-3, 1.5e-3}
-                                            : std::vector<double>{2.0e-3, 1.5e-3, 1.0e-3, 0.75e-3};
+  const std::vector<double> dxs = ctx.quick
+                                      ? std::vector<double>{1.875e-3, 1.5e-3}
+                                      : std::vector<double>{1.875e-3, 1.5e-3, 1.0e-3, 0.75e-3};
   const std::vector<std::string> maps = {"mirror", "mirror_beta", "density_preserving"};
-  const double plot_dx = ctx.quick ? 1.5e-3 : 1.0e-3;
-  const double t_run = ctx.quick ? 0.5 : 5.0;     // B: from the analytic profile
-  const double t_hydro = ctx.quick ? 0.2 : 1.0;   // A: Barker Fig. 2
-  const double t_rest = ctx.quick ? 2.0 : 120.0;  // C: from rest
-  const double rest_dx = 2.0e-3;
+  const double plot_dx = 1.5e-3;
+  const double t_run = ctx.quick ? 0.3 : 1.0;    // B: from the analytic profile
+  const double t_hydro = ctx.quick ? 0.2 : 1.0;  // A: Barker Fig. 2
+  const double t_rest = ctx.quick ? 2.0 : 20.0;  // C: from rest
+  const double rest_dx = 1.875e-3;               // 8 rings: the gap holds an integer number of dx
   fs::remove_all(ctx.out_dir / "runs");
   fs::create_directories(ctx.out_dir);
   StudyResult r;

@@ -1,4 +1,4 @@
-// `curvsph validate poiseuille`: the plane Poiseuille case at its own resolution (20
+// `curvsph validate poiseuille`: the plane Poiseuille case at its own resolution (32
 // particles across the channel), started from rest and run for three viscous times; the
 // velocity profile against the parabola and the error history.
 #include <fmt/format.h>
@@ -28,14 +28,14 @@ StudyResult run_poiseuille_study(const StudyContext& ctx) {
                         "steps", "wall_seconds"})
     r.metrics[k] = m[k];
   const std::string ref =
-      fmt::format("parabola g/(2 nu) y (H - y); dx = H/20, t = {} H^2/nu", c.t_end);
+      fmt::format("parabola g/(2 nu) y (H - y); dx = H/32, t = {} H^2/nu", c.t_end);
   r.summary.push_back({"poiseuille.velocity_l2_error", l2, "<= 0.01", ref, l2 <= 0.01});
   run_plot_script(ctx, "plot_poiseuille.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Plane Poiseuille flow\n\n"
      << "Case `cases/poiseuille_2d.yaml`: channel H = 1 mm, periodic along x, nu = 1e-6 m^2/s, "
         "g = 8e-3 m/s^2 along x (u_max = 1 mm/s, Re = 1), no-slip mirror ghosts on two plane "
-        "walls, 20 particles across, started from rest and run to t = "
+        "walls, 32 particles across, started from rest and run to t = "
      << c.t_end << " s (" << c.t_end
      << " viscous times H^2/nu). Regenerate with `build/curvsph validate poiseuille`.\n\n"
      << fmt::format("{} particles, {} steps, {:.1f} s wall.\n\n", m["particles"].get<long>(),

@@ -1,6 +1,8 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/analysis/static_droplet.hpp"
+#include "curvsph/analysis/couette_analysis.hpp"
+#include "curvsph/analysis/poiseuille_analysis.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/core/error.hpp"
 
@@ -18,6 +20,8 @@ struct Entry {
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
     {"static_droplet", &make_static_droplet_analysis<2>, nullptr},
+    {"couette", &make_couette_analysis, &couette_initial},
+    {"poiseuille", &make_poiseuille_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},
@@ -55,9 +59,9 @@ void apply_initial_field(const Case& c, const Eos& eos, const std::vector<Real>&
                          Particles<D>& P) {
   for (const auto& e : entries<D>())
     if (c.initial_field == e.name && e.initial) return e.initial(c, c.initial_params, eos, rho0, P);
-  throw InputError(c.file_name(), "initial." + c.initial_field,
-                   "unknown initial flow field in " + std::to_string(D) +
-                       "-D (known: " + names<D>() + ")");
+  throw InputError(
+      c.file_name(), "initial." + c.initial_field,
+      "unknown initial flow field in " + std::to_string(D) + "-D (known: " + names<D>() + ")");
 }
 
 template std::unique_ptr<Analysis<2>> make_analysis<2>(const std::string&, const YAML::Node&,

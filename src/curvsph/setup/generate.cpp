@@ -101,7 +101,9 @@ template <int D>
 void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls) {
   std::vector<GeneratedPoint> all;
   std::vector<int> phase;
-  const double clearance = 0.5 * c.dx * (1 - 1e-6);
+  // A lattice aligned with a wall sits dx/2 from it; annulus rings sit dr/2 >= dx/3 from their
+  // walls (dr = gap / round(gap/dx)). Keep everything farther than 0.3 dx.
+  const double clearance = 0.3 * c.dx;
   auto wet = [&](const Vec3d& x) {
     const VecD<D> p = x.head<D>();
     for (const auto& w : walls.walls())

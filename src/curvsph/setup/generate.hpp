@@ -20,7 +20,7 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& region, int dimens
                                             const std::string& file, const std::string& key);
 
 // All fluids of the case into P (mass = rho0 * volume, velocity from the fluid spec). Points
-// closer than dx/2 to a wall, or on its far side, are dropped, so a region may overlap the
+// closer than 0.3·dx to a wall, or on its far side, are dropped, so a region may overlap the
 // walls; `inside_walls` fills the domain box on the fluid side of every wall. Fluids are
 // painted in list order: where regions overlap, the fluid listed later wins.
 template <int D>

@@ -62,7 +62,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
 
   std::vector<std::unique_ptr<Analysis<D>>> analyses;
   if (const YAML::Node an = c.root["analysis"]; an && an.IsMap())
-    for (const auto& kv : an) analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
+    for (const auto& kv : an)
+      analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
 
   io::PvdSeries series(o.out_dir / "series.pvd");
   std::unique_ptr<ProbeWriter<D>> probes;
@@ -70,7 +71,6 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
                                               static_cast<Real>(c.dx));
   int snapshot = 0;
-  double last_snapshot_time = -1;
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || !c.write_vtk) return;
     const auto t0 = std::chrono::steady_clock::now();
@@ -93,12 +93,13 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         series.add(solver.time(), bfile, 1);
       }
     }
-    last_snapshot_time = solver.time();
     solver.phase_times().output +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
+  double last_observed_time = -1;
   auto observe = [&] {
     for (auto& a : analyses) a->observe(solver.time(), solver.particles());
+    last_observed_time = solver.time();
   };
 
   const double t_end = c.t_end;
@@ -138,7 +139,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   }
   progress.update(solver.steps(), solver.time(), solver.dt(), true);
   progress.finish();
-  if (solver.time() != last_snapshot_time) {
+  // The last state is observed once: compare with the last observation, not the last
+  // snapshot (with output.vtk = false no snapshot is ever written).
+  if (solver.time() != last_observed_time) {
     write_snapshot("");
     observe();
   }

@@ -5,6 +5,8 @@ namespace curvsph {
 
 StudyResult run_taylor_green_study(const StudyContext& ctx);
 StudyResult run_shepard_approach_study(const StudyContext& ctx);  // shepard_approach_study.cpp
+StudyResult run_couette_study(const StudyContext& ctx);           // couette_study.cpp
+StudyResult run_poiseuille_study(const StudyContext& ctx);        // poiseuille_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -13,6 +15,9 @@ const std::vector<Study>& validation_studies() {
       {"shepard_approach",
        "Shepard factor approaching a wall, corner, circle (Calderon Figs. 2, 4-7)",
        run_shepard_approach_study},
+      {"couette", "Couette flow, three ghost maps at four dx (Barker Figs. 1-4)",
+       &run_couette_study},
+      {"poiseuille", "Plane Poiseuille flow: profile against the parabola", &run_poiseuille_study},
   };
   return studies;
 }

@@ -1,0 +1,127 @@
+"""Plots of `curvsph validate couette` (Barker & Neethling Figs. 1-4).
+
+Usage: plot_couette.py OUT_DIR PLOT_DX_MM REST_DX_MM
+Reads OUT_DIR/couette.csv and the per-run CSVs under OUT_DIR/runs/.
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+MAPS = ["mirror", "mirror_beta", "density_preserving"]
+STYLE = {"mirror": ("tab:red", ":"), "mirror_beta": ("tab:blue", "-"),
+         "density_preserving": ("tab:green", "--")}
+
+
+def load(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else {}
+
+
+def density_plot(out, what, dx, fname, title):
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+    for ax, m in zip(axes, ["mirror", "mirror_beta"]):
+        p = os.path.join(out, "runs", f"{what}_{m}_dx{dx}mm", f"couette_density_{fname}.csv")
+        if not os.path.exists(p):
+            continue
+        d = load(p)
+        ax.plot(d["r"] * 100, d["rho_over_rho0"], ".", ms=3, color=STYLE[m][0])
+        ax.axhline(1.0, color="k", lw=0.8)
+        ax.set_xlabel("r (cm)")
+        ax.set_title(f"{m}")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel(r"$\rho/\rho_0$")
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"density_{fname}.png"), dpi=120)
+    plt.close(fig)
+
+
+def main():
+    out, dx, rest_dx = sys.argv[1], sys.argv[2], sys.argv[3]
+    density_plot(out, "t0", dx, "t0", f"Hydrostatic density at t = 0, dx = {dx} mm (Barker Fig. 1)")
+    density_plot(out, "hydro", dx, "end",
+                 f"Hydrostatic density at the end of the run, dx = {dx} mm (Barker Fig. 2)")
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for m in MAPS:
+        p = os.path.join(out, "runs", f"rot_{m}_dx{dx}mm", "couette_error.csv")
+        if os.path.exists(p):
+            d = load(p)
+            ax.plot(d["time"], d["velocity_l2_error"], color=STYLE[m][0], ls=STYLE[m][1], label=m)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel(r"$\varepsilon / \omega R_i$")
+    ax.set_title(f"Error vs time from the analytic profile, dx = {dx} mm")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for m in ["mirror", "mirror_beta"]:
+        p = os.path.join(out, "runs", f"rest_{m}_dx{rest_dx}mm", "couette_error.csv")
+        if os.path.exists(p):
+            d = load(p)
+            ax.semilogy(d["time"], d["velocity_l2_error"], color=STYLE[m][0], ls=STYLE[m][1],
+                        label=m)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel(r"$\varepsilon / \omega R_i$")
+    ax.set_title(f"Error vs time from rest, dx = {rest_dx} mm (Barker Fig. 3b)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "error_vs_time_from_rest.png"), dpi=120)
+    plt.close(fig)
+
+    with open(os.path.join(out, "couette.csv")) as f:
+        rows = list(csv.DictReader(f))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for m in MAPS:
+        rs = [r for r in rows if r["map"] == m]
+        x = [float(r["dx"]) * 1e3 for r in rs]
+        axes[0].loglog(x, [float(r["velocity_l2_error"]) for r in rs], "o", color=STYLE[m][0],
+                       ls=STYLE[m][1], label=m)
+        axes[1].loglog(x, [float(r["density_error_t0"]) for r in rs], "o", color=STYLE[m][0],
+                       ls=STYLE[m][1], label=m)
+    axes[0].set_ylabel(r"$\varepsilon / \omega R_i$ at the end")
+    axes[0].set_title("Velocity error vs dx (Barker Fig. 4)")
+    axes[1].set_ylabel(r"max $|\rho/\rho_0 - 1|$ at t = 0 (hydrostatic)")
+    axes[1].set_title("Density error at t = 0 vs dx")
+    for ax in axes:
+        ax.set_xlabel("dx (mm)")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "error_vs_dx.png"), dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    exact = None
+    for m in MAPS:
+        p = os.path.join(out, "runs", f"rot_{m}_dx{dx}mm", "couette_profile.csv")
+        if os.path.exists(p):
+            d = load(p)
+            ax.plot(d["r"] * 100, d["v_theta"], ".", ms=2, color=STYLE[m][0], label=m)
+            exact = d
+    if exact is not None:
+        o = np.argsort(exact["r"])
+        ax.plot(exact["r"][o] * 100, exact["v_theta_exact"][o], "k-", lw=1, label="analytic")
+    ax.set_xlabel("r (cm)")
+    ax.set_ylabel(r"$v_\theta$ (m/s)")
+    ax.set_title(f"Velocity profile at the end, dx = {dx} mm (Barker Fig. 3a)")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "profile.png"), dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,5 +1,7 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
+#include "curvsph/analysis/cylinder_lattice.hpp"
+#include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/core/error.hpp"
 
@@ -16,9 +18,11 @@ struct Entry {
 
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
+    {"node_density", &make_node_density_analysis<2>, nullptr},
+    {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
-    {"", nullptr, nullptr},
+    {"node_density", &make_node_density_analysis<3>, nullptr},
 };
 
 template <int D>

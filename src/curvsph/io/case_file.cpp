@@ -158,7 +158,8 @@ RegionSpec read_region(const Keys& k, int dim) {
     if (kv.first.as<std::string>() != "random") type = kv.first.as<std::string>();
   RegionSpec r;
   if (has_random) r.random = k.boolean("random", false);
-  const Keys s = k.sub(type);
+  // inside_walls holds a scalar (true), the other regions a mapping of keys.
+  const Keys s = type == "inside_walls" ? k : k.sub(type);
   if (type == "box") {
     s.allow({"min", "max"});
     r.kind = RegionSpec::Kind::box;

@@ -69,7 +69,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   std::vector<LowRun> runs;
   for (const auto& map : maps)
     for (double v0 : v0s)
-      for (int s = 1; s <= seeds; ++s) runs.push_back({map, v0, s});
+      for (int s = 1; s <= seeds; ++s) runs.push_back({map, v0, s, 0.0, 0, 0, {}});
   long particles_low = 0;
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t k = 0; k < runs.size(); ++k) {

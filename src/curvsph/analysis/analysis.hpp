@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "curvsph/core/error.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/eos.hpp"
@@ -24,6 +25,13 @@ class Analysis {
   virtual ~Analysis() = default;
   // Called at t = 0 and at every output time.
   virtual void observe(double /*t*/, const Particles<D>& /*P*/) {}
+  // Called when the run goes unstable at time t (the last completed step). An analysis whose
+  // figure is the time of such an event (Vela Vela eq. 37) returns true: the run then ends
+  // there normally, with metrics (`unstable: 1`), instead of exit code 3.
+  virtual bool absorb_instability(double /*t*/, const Particles<D>& /*P*/,
+                                  const InstabilityError& /*e*/) {
+    return false;
+  }
   // Adds the analysis' figures to metrics; may write its curves (CSV) into out_dir when
   // that is not empty.
   virtual void finish(double t, const Particles<D>& P, nlohmann::json& metrics,

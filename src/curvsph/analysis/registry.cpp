@@ -1,8 +1,10 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
-#include "curvsph/analysis/static_droplet.hpp"
 #include "curvsph/analysis/couette_analysis.hpp"
+#include "curvsph/analysis/cylinder_lattice.hpp"
+#include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/poiseuille_analysis.hpp"
+#include "curvsph/analysis/static_droplet.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/core/error.hpp"
 
@@ -22,9 +24,12 @@ const Entry<2> kEntries2[] = {
     {"static_droplet", &make_static_droplet_analysis<2>, nullptr},
     {"couette", &make_couette_analysis, &couette_initial},
     {"poiseuille", &make_poiseuille_analysis, nullptr},
+    {"node_density", &make_node_density_analysis<2>, nullptr},
+    {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},
+    {"node_density", &make_node_density_analysis<3>, nullptr},
 };
 
 template <int D>

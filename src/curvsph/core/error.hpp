@@ -28,16 +28,24 @@ class InputError : public std::runtime_error {
 };
 
 // A run that went unstable (NaN, density out of range, a particle through a wall).
+// `penetration`: particles went through a wall (count of them); `blowup`: NaN or density
+// out of range.
 class InstabilityError : public std::runtime_error {
  public:
-  InstabilityError(const std::string& what, long step, long particle)
-      : std::runtime_error(what), step_(step), particle_(particle) {}
+  enum class Kind { blowup, penetration };
+  InstabilityError(const std::string& what, long step, long particle, Kind kind = Kind::blowup,
+                   long count = 1)
+      : std::runtime_error(what), step_(step), particle_(particle), kind_(kind), count_(count) {}
   long step() const { return step_; }
   long particle() const { return particle_; }
+  Kind kind() const { return kind_; }
+  long count() const { return count_; }
 
  private:
   long step_;
   long particle_;
+  Kind kind_;
+  long count_;
 };
 
 inline constexpr int kExitInputError = 2;

@@ -149,11 +149,17 @@ class Keys {
 };
 
 RegionSpec read_region(const Keys& k, int dim) {
-  if (!k.node() || !k.node().IsMap() || k.node().size() != 1)
-    k.fail(k.path(), "must hold exactly one region: box | disk | ball | annulus | inside_walls");
-  const std::string type = k.node().begin()->first.as<std::string>();
+  const bool has_random = k.node() && k.node().IsMap() && k.node()["random"];
+  if (!k.node() || !k.node().IsMap() || k.node().size() != (has_random ? 2u : 1u))
+    k.fail(k.path(), "must hold exactly one region: box | disk | ball | annulus | inside_walls "
+                     "(and optionally random: true)");
+  std::string type;
+  for (const auto& kv : k.node())
+    if (kv.first.as<std::string>() != "random") type = kv.first.as<std::string>();
   RegionSpec r;
-  const Keys s = k.sub(type);
+  if (has_random) r.random = k.boolean("random", false);
+  // inside_walls holds a scalar (true), the other regions a mapping of keys.
+  const Keys s = type == "inside_walls" ? k : k.sub(type);
   if (type == "box") {
     s.allow({"min", "max"});
     r.kind = RegionSpec::Kind::box;
@@ -344,9 +350,13 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.lattice_jitter = setup.boolean("jitter", false);
   if (setup.has("relax")) {
     const Keys relax = setup.sub("relax");
-    relax.allow({"max_steps", "tolerance"});
-    relax.integer("max_steps", 2000);
-    relax.positive("tolerance", 1e-3);
+    relax.allow({"max_steps", "tolerance", "map"});
+    c.relax.enabled = true;
+    c.relax.max_steps = relax.integer("max_steps", 2000);
+    if (c.relax.max_steps < 0) relax.fail(relax.key("max_steps"), "must be >= 0");
+    c.relax.tolerance = relax.positive("tolerance", 1e-3);
+    c.relax.map =
+        relax.choice("map", {"mirror", "mirror_beta", "density_preserving"}, c.boundary.map);
   }
 
   const Keys time = top.sub("time");

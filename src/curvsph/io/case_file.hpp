@@ -19,6 +19,9 @@ struct RegionSpec {
   Vec3d min = Vec3d::Zero(), max = Vec3d::Zero();  // box
   Vec3d center = Vec3d::Zero();                    // disk, ball, annulus
   double radius = 0, r_in = 0, r_out = 0;
+  // `random: true` next to the region: as many particles as the lattice would hold, at
+  // uniformly random positions (setup.random_seed), e.g. as the start of a relaxation.
+  bool random = false;
 };
 
 struct FluidSpec {
@@ -47,6 +50,15 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_particles = false;
+};
+
+// setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation
+// (default: boundary.map).
+struct RelaxSpec {
+  bool enabled = false;
+  long max_steps = 2000;
+  double tolerance = 1e-3;
+  std::string map;
 };
 
 struct ProbeSpec {
@@ -83,6 +95,7 @@ struct Case {
   double shifting = 0;  // particle shifting coefficient C (0: off); see particle_shifting.hpp
   unsigned random_seed = 1;
   bool lattice_jitter = false;
+  RelaxSpec relax;
   double t_end = 0;
   double cfl = 0.2;
   double dt_max = 0;  // 0: no cap

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "curvsph/core/error.hpp"
 
@@ -23,6 +24,31 @@ void lattice(const Vec3d& lo, const Vec3d& hi, int dim, double dx, Inside inside
         for (int d = 0; d < dim; ++d) x[d] = lo[d] + (idx[d] + 0.5) * dx;
         if (inside(x)) out.push_back({x, vol});
       }
+}
+
+// Bounding box of a region (the domain for inside_walls).
+void region_bounds(const RegionSpec& r, const Case& c, int dim, Vec3d& lo, Vec3d& hi) {
+  lo = hi = Vec3d::Zero();
+  switch (r.kind) {
+    case RegionSpec::Kind::box:
+      lo = r.min;
+      hi = r.max;
+      break;
+    case RegionSpec::Kind::disk:
+    case RegionSpec::Kind::ball:
+    case RegionSpec::Kind::annulus: {
+      const double rad = r.kind == RegionSpec::Kind::annulus ? r.r_out : r.radius;
+      for (int d = 0; d < dim; ++d) {
+        lo[d] = r.center[d] - rad;
+        hi[d] = r.center[d] + rad;
+      }
+      break;
+    }
+    case RegionSpec::Kind::inside_walls:
+      lo = c.domain_min;
+      hi = c.domain_max;
+      break;
+  }
 }
 
 // Whether x lies in the region (first dim axes); inside_walls regions hold every point.
@@ -138,6 +164,19 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
         all.push_back(p);
         ++kept;
       }
+    if (c.fluids[f].region.random && kept > 0) {
+      // Same count and volumes, uniformly random positions in the region (wet ones only).
+      std::mt19937_64 rng(static_cast<std::uint64_t>(c.random_seed) * 7919u + f);
+      std::uniform_real_distribution<double> u(0.0, 1.0);
+      Vec3d lo, hi;
+      region_bounds(c.fluids[f].region, c, D, lo, hi);
+      for (std::size_t q = all.size() - kept; q < all.size();) {
+        Vec3d x = Vec3d::Zero();
+        for (int d = 0; d < D; ++d) x[d] = lo[d] + (hi[d] - lo[d]) * u(rng);
+        if (!region_contains(c.fluids[f].region, D, x) || !(walls.empty() || wet(x))) continue;
+        all[q++].x = x;
+      }
+    }
     if (kept == 0)
       throw InputError(c.file_name(), key,
                        "no particle of this region is left (all on the far side of a wall or "

@@ -59,6 +59,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const auto& P = solver.particles();
   log("{} particles, dimension {}, dx = {}, h = {}, threads = {}", P.size(), D, c.dx, c.h(),
       omp_get_max_threads());
+  if (const auto& rr = solver.relax_result())
+    log("relaxation: {} steps in {:.2f} s, node-density spread {:.4g} -> {:.4g} (tolerance {})",
+        rr->steps, rr->seconds, rr->spread_initial, rr->spread, c.relax.tolerance);
 
   std::vector<std::unique_ptr<Analysis<D>>> analyses;
   if (const YAML::Node an = c.root["analysis"]; an && an.IsMap())
@@ -113,6 +116,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
 
   Progress progress(o.progress, t_end, P.size());
   const auto loop_start = std::chrono::steady_clock::now();
+  bool unstable = false;
   try {
     while (solver.time() < t_end - eps && (c.max_steps == 0 || solver.steps() < c.max_steps)) {
       const double t = solver.time();
@@ -135,13 +139,20 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     progress.finish();
     log("UNSTABLE: {}", e.what());
     write_snapshot("particles_unstable.vtp");
-    throw;
+    bool absorbed = false;
+    for (auto& a : analyses)
+      absorbed |= a->absorb_instability(solver.time(), solver.particles(), e);
+    if (!absorbed) throw;
+    unstable = true;
+    log("the run stops at t = {:.6g}; the analyses record the event", solver.time());
   }
-  progress.update(solver.steps(), solver.time(), solver.dt(), true);
-  progress.finish();
+  if (!unstable) {
+    progress.update(solver.steps(), solver.time(), solver.dt(), true);
+    progress.finish();
+  }
   // The last state is observed once: compare with the last observation, not the last
   // snapshot (with output.vtk = false no snapshot is ever written).
-  if (solver.time() != last_observed_time) {
+  if (!unstable && solver.time() != last_observed_time) {
     write_snapshot("");
     observe();
   }
@@ -158,6 +169,13 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   m["particle_steps_per_second"] =
       loop_seconds > 0 ? static_cast<double>(P.size()) * solver.steps() / loop_seconds : 0.0;
   m["time_reached"] = solver.time();
+  m["unstable"] = unstable ? 1 : 0;
+  if (const auto& rr = solver.relax_result()) {
+    m["relax_steps"] = rr->steps;
+    m["relax_node_density_spread"] = rr->spread;
+    m["relax_node_density_spread_initial"] = rr->spread_initial;
+    m["relax_seconds"] = rr->seconds;
+  }
   const auto& pt = solver.phase_times();
   m["seconds_neighbors"] = pt.neighbors;
   m["seconds_boundary"] = pt.boundary;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
@@ -55,6 +56,15 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
       throw InputError(c.file_name(), "domain", "periodic axes need domain.min and domain.max");
   cells_.configure(W_.support, lo, hi, c.periodic);
   for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
+  if (c.relax.enabled) {
+    RelaxOptions ro;
+    ro.max_steps = c.relax.max_steps;
+    ro.tolerance = c.relax.tolerance;
+    ro.map = parse_ghost_map(c.relax.map.empty() ? c.boundary.map : c.relax.map, c.file_name(),
+                             "setup.relax.map");
+    ro.dx = c.dx;
+    relax_ = relax_particles<D>(P_.x, walls_, cells_, W_, ro);
+  }
 
   if (!c.initial_field.empty())
     apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
@@ -88,7 +98,8 @@ void Solver<D>::compute_rates(Real dt_rho) {
       throw InstabilityError(
           fmt::format("step {}, t = {:.6g}: particle {} went through a wall ({} particles did)",
                       steps_, t_, P_.id[i], boundary_->penetrated().size()),
-          steps_, static_cast<long>(P_.id[i]));
+          steps_, static_cast<long>(P_.id[i]), InstabilityError::Kind::penetration,
+          static_cast<long>(boundary_->penetrated().size()));
     }
   }
   {

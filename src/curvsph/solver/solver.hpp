@@ -3,6 +3,7 @@
 // passes and kick-drift-kick time integration (DESIGN.md §1). Output and analysis live in
 // run.cpp; this class only advances the state.
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "curvsph/boundary/boundary_model.hpp"
@@ -12,6 +13,7 @@
 #include "curvsph/neighbors/cell_list.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
 #include "curvsph/physics/surface_tension.hpp"
+#include "curvsph/setup/relax.hpp"
 
 namespace curvsph {
 
@@ -44,6 +46,8 @@ class Solver {
   const BoundaryModel<D>* boundary() const { return boundary_.get(); }
   const PhaseTimes& phase_times() const { return times_; }
   PhaseTimes& phase_times() { return times_; }
+  // The set-up relaxation (setup.relax), when the case asks for one.
+  const std::optional<RelaxResult>& relax_result() const { return relax_; }
 
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
@@ -74,6 +78,7 @@ class Solver {
   long steps_ = 0;
   Real nu_max_ = 0;
   PhaseTimes times_;
+  std::optional<RelaxResult> relax_;
   static constexpr long kResortEvery = 20;
 };
 

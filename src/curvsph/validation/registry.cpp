@@ -7,6 +7,9 @@ StudyResult run_taylor_green_study(const StudyContext& ctx);
 StudyResult run_shepard_approach_study(const StudyContext& ctx);  // shepard_approach_study.cpp
 StudyResult run_couette_study(const StudyContext& ctx);           // couette_study.cpp
 StudyResult run_poiseuille_study(const StudyContext& ctx);        // poiseuille_study.cpp
+StudyResult run_node_density_study(const StudyContext& ctx);      // node_density_study.cpp
+StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_study.cpp
+StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -18,6 +21,12 @@ const std::vector<Study>& validation_studies() {
       {"couette", "Couette flow, three ghost maps at four dx (Barker Figs. 1-4)",
        &run_couette_study},
       {"poiseuille", "Plane Poiseuille flow: profile against the parabola", &run_poiseuille_study},
+      {"node_density", "Node density across cylinder, sphere, torus walls (Vela Vela Figs. 6-8)",
+       &run_node_density_study},
+      {"ghost_cost", "Cost of the density-preserving ghost map (Vela Vela Table 1)",
+       &run_ghost_cost_study},
+      {"cylinder_lattice", "Lattice of cylinders: v_y field and t_max (Vela Vela Figs. 9-10)",
+       &run_cylinder_lattice_study},
   };
   return studies;
 }

@@ -1,0 +1,162 @@
+#include "curvsph/analysis/node_density.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+
+#include "curvsph/boundary/ghost/ghosts.hpp"
+#include "curvsph/geometry/wall_parser.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/setup/relax.hpp"
+
+namespace curvsph {
+namespace {
+
+template <int D>
+class NodeDensityAnalysis final : public Analysis<D> {
+ public:
+  NodeDensityAnalysis(const YAML::Node& params, const Case& c)
+      : case_(c), W_(static_cast<Real>(c.h())) {
+    if (c.root["walls"] && c.root["walls"].IsSequence())
+      walls_ = parse_walls<D>(c.root["walls"], c.file_name(), c.file.parent_path());
+    if (walls_.empty())
+      throw InputError(c.file_name(), "analysis.node_density", "needs at least one wall");
+    ghost_support_ = std::numeric_limits<double>::infinity();
+    if (params && params.IsMap() && params["ghost_support"]) {
+      const YAML::Node s = params["ghost_support"];
+      if (!(s.IsScalar() && s.as<std::string>() == "all")) {
+        double v = 0;
+        if (!YAML::convert<double>::decode(s, v) || !(v > 0))
+          throw InputError(c.file_name(), "analysis.node_density.ghost_support",
+                           "must be 'all' or a positive depth");
+        ghost_support_ = v;
+      }
+    }
+    maps_ = {GhostMapKind::mirror, GhostMapKind::density_preserving};
+    const GhostMapKind own = parse_ghost_map(c.boundary.map, c.file_name(), "boundary.map");
+    if (own == GhostMapKind::mirror_beta) maps_.push_back(own);
+    own_ = own;
+  }
+
+  void finish(double, const Particles<D>& P, nlohmann::json& m,
+              const std::filesystem::path& out_dir) override {
+    const Case& c = case_;
+    CellList<D> cells, gcells;
+    cells.configure(W_.support, c.domain_min, c.domain_max, c.periodic);
+    gcells.configure(W_.support, c.domain_min, c.domain_max, c.periodic);
+    cells.build(P.x);
+    const Index n = static_cast<Index>(P.size());
+    const Real support = W_.support;
+
+    // Distance of each fluid particle to the nearest wall.
+    std::vector<double> dist(n);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) dist[i] = walls_.closest(P.x[i].template cast<double>()).distance;
+
+    // Reference: fluid-only n of the deep particles.
+    std::vector<Real> n_fluid;
+    node_density<D>(P.x, P.x, cells, nullptr, nullptr, W_, n_fluid);
+    std::vector<Real> deep;
+    for (Index i = 0; i < n; ++i)
+      if (dist[i] >= support) deep.push_back(n_fluid[i]);
+    if (deep.empty()) deep = n_fluid;
+    double ref = 0;
+    for (Real v : deep) ref += v;
+    ref /= static_cast<double>(deep.size());
+    m["node_density_ref"] = ref;
+    m["node_density_interior_spread"] = relative_spread(deep);
+
+    std::ofstream binned, points;
+    if (!out_dir.empty()) {
+      binned.open(out_dir / "node_density_binned.csv");
+      binned << "map,kind,distance,mean,std,min,max,count\n";
+      points.open(out_dir / "node_density_points.csv");
+      points << "map,kind,distance,n_rel\n";
+    }
+    const double bin = 0.25 * c.dx;
+    for (GhostMapKind map : maps_) {
+      GhostOptions<D> go;
+      go.map = map;
+      go.support = ghost_support_;
+      go.cells = &cells;
+      GhostSet<D> G;
+      const std::vector<Vec<D>> v0(P.size(), Vec<D>::Zero());
+      G.build(P.x, v0, walls_, go);
+      gcells.build(G.x);
+      std::vector<Real> ng, nf;
+      node_density<D>(G.x, P.x, cells, &G, &gcells, W_, ng);
+      node_density<D>(P.x, P.x, cells, &G, &gcells, W_, nf);
+      double dev = 0;
+      long near = 0;
+      for (std::size_t g = 0; g < G.size(); ++g)
+        if (G.depth[g] < support) {
+          dev += std::abs(ng[g] / ref - 1.0);
+          ++near;
+        }
+      dev = near > 0 ? dev / near : 0.0;
+      const std::string name = to_string(map);
+      m["ghost_node_density_dev_" + name] = dev;
+      if (map == own_) {
+        m["ghost_node_density_dev"] = dev;
+        m["node_density_ghosts_near_wall"] = near;
+      }
+      if (!out_dir.empty()) {
+        // Binned profile against the signed distance (ghosts negative).
+        struct Acc {
+          double s = 0, s2 = 0, mn = 1e300, mx = -1e300;
+          long k = 0;
+        };
+        for (int kind = 0; kind < 2; ++kind) {
+          std::map<long, Acc> bins;
+          const std::size_t count = kind == 0 ? P.size() : G.size();
+          const std::size_t stride = std::max<std::size_t>(1, count / 6000);
+          for (std::size_t q = 0; q < count; ++q) {
+            const double s = kind == 0 ? dist[q] : -G.depth[q];
+            const double v = (kind == 0 ? nf[q] : ng[q]) / ref;
+            Acc& a = bins[std::lround(std::floor(s / bin))];
+            a.s += v;
+            a.s2 += v * v;
+            a.mn = std::min(a.mn, v);
+            a.mx = std::max(a.mx, v);
+            ++a.k;
+            if (q % stride == 0)
+              points << fmt::format("{},{},{:.6g},{:.6g}\n", name, kind == 0 ? "fluid" : "ghost",
+                                    s, v);
+          }
+          for (const auto& [b, a] : bins) {
+            const double mean = a.s / a.k;
+            binned << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{}\n", name,
+                                  kind == 0 ? "fluid" : "ghost", (b + 0.5) * bin, mean,
+                                  std::sqrt(std::max(0.0, a.s2 / a.k - mean * mean)), a.mn, a.mx,
+                                  a.k);
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  Case case_;
+  WendlandC2<D> W_;
+  WallSet<D> walls_;
+  double ghost_support_;
+  std::vector<GhostMapKind> maps_;
+  GhostMapKind own_ = GhostMapKind::mirror;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Analysis<D>> make_node_density_analysis(const YAML::Node& params, const Case& c) {
+  return std::make_unique<NodeDensityAnalysis<D>>(params, c);
+}
+
+template std::unique_ptr<Analysis<2>> make_node_density_analysis<2>(const YAML::Node&,
+                                                                   const Case&);
+template std::unique_ptr<Analysis<3>> make_node_density_analysis<3>(const YAML::Node&,
+                                                                   const Case&);
+
+}  // namespace curvsph

@@ -1,6 +1,7 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
+#include "curvsph/analysis/throttled_pipe.hpp"
 #include "curvsph/core/error.hpp"
 
 namespace curvsph {
@@ -16,6 +17,7 @@ struct Entry {
 
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
+    {"throttled_pipe", &make_throttled_pipe_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
     {"", nullptr, nullptr},

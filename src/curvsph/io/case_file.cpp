@@ -153,7 +153,8 @@ RegionSpec read_region(const Keys& k, int dim) {
     k.fail(k.path(), "must hold exactly one region: box | disk | ball | annulus | inside_walls");
   const std::string type = k.node().begin()->first.as<std::string>();
   RegionSpec r;
-  const Keys s = k.sub(type);
+  // inside_walls holds a scalar (true), the other regions a mapping of keys.
+  const Keys s = type == "inside_walls" ? k : k.sub(type);
   if (type == "box") {
     s.allow({"min", "max"});
     r.kind = RegionSpec::Kind::box;

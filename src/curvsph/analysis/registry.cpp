@@ -17,7 +17,7 @@ struct Entry {
 
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
-    {"throttled_pipe", &make_throttled_pipe_analysis, nullptr},
+    {"throttled_pipe", &make_throttled_pipe_analysis, &throttled_pipe_initial},
 };
 const Entry<3> kEntries3[] = {
     {"", nullptr, nullptr},

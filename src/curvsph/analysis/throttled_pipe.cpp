@@ -290,10 +290,17 @@ void throttled_pipe_initial(const Case& c, const YAML::Node& params, const Eos& 
                             const std::vector<Real>& rho0, Particles<2>& P) {
   const std::string file = c.file_name(), key = "initial.throttled_pipe";
   bool lubrication = false;
+  double flux = 0;  // 0: the lubrication estimate for the body force
   if (params && params.IsMap()) {
     for (const auto& kv : params) {
       const auto k = kv.first.as<std::string>();
-      if (k != "velocity") throw InputError(file, key + "." + k, "unknown key (allowed: velocity)");
+      if (k == "flux") {
+        if (!YAML::convert<double>::decode(kv.second, flux) || !(flux > 0))
+          throw InputError(file, key + ".flux", "must be a number > 0 (m^2/s)");
+        continue;
+      }
+      if (k != "velocity")
+        throw InputError(file, key + "." + k, "unknown key (allowed: velocity, flux)");
       const auto v = kv.second.IsScalar() ? kv.second.as<std::string>() : std::string();
       if (v != "rest" && v != "lubrication")
         throw InputError(file, key + ".velocity", "must be rest or lubrication");
@@ -324,7 +331,7 @@ void throttled_pipe_initial(const Case& c, const YAML::Node& params, const Eos& 
   for (long i = 0; i < nx; ++i)
     inv_r3 +=
         cx * std::pow(gap(c.domain_min[0] + (static_cast<double>(i) + 0.5) * cx).half_width(), -3);
-  const double q = 2 * f.rho0 * c.gravity[0] * lx / (3 * f.viscosity * inv_r3);
+  const double q = flux > 0 ? flux : 2 * f.rho0 * c.gravity[0] * lx / (3 * f.viscosity * inv_r3);
   std::vector<Vec2d> pos, vel;
   std::vector<double> vol;
   for (long i = 0; i < nx; ++i) {

@@ -44,10 +44,11 @@ ChannelGap channel_gap(const WallSet<2>& walls, double x, double y_start, double
 
 std::unique_ptr<Analysis<2>> make_throttled_pipe_analysis(const YAML::Node& params, const Case& c);
 
-// Initial state `initial: {throttled_pipe: {velocity: rest | lubrication}}`: the particles
+// Initial state `initial: {throttled_pipe: {velocity: rest | lubrication, flux: Q}}`: the particles
 // of fluid 0 re-placed in wall-fitted columns, at rest (default) or with the lubrication
 // flow of the body force (local Poiseuille profile 3Q/(4R)(1 - eta^2), eta = (y - y_c)/R,
-// v_y along the streamlines y = y_c + eta R(x), Q = 2 rho g_x L_x / (3 mu integral R^-3 dx))
+// v_y along the streamlines y = y_c + eta R(x), Q = `flux` or by default the lubrication
+// estimate 2 rho g_x L_x / (3 mu integral R^-3 dx))
 // to skip most of the viscous spin-up (time scale 4 R^2 / (pi^2 nu) ~ 1 s). Column i sits at x_i =
 // x_min + (i + 1/2) L_x/n_x with n_x = round(L_x/dx); between its walls (channel_gap) it holds n =
 // round(gap/dx) particles at spacing dy = gap/n, the first and last dy/2 from the walls, with mass

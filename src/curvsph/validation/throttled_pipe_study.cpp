@@ -21,7 +21,7 @@ StudyResult run_throttled_pipe_study(const StudyContext& ctx) {
   // that at 2.5e-4; the finer run is therefore shorter (the flow starts near its steady
   // state, see the case file; throttled_pipe_history.csv shows how far it still drifts).
   const std::vector<std::string> t_ends =
-      ctx.quick ? std::vector<std::string>{"0.3"} : std::vector<std::string>{"2.0", "1.0"};
+      ctx.quick ? std::vector<std::string>{"0.3"} : std::vector<std::string>{"1.5", "0.6"};
   std::filesystem::create_directories(ctx.out_dir);
   std::ofstream csv(ctx.out_dir / "throttled_pipe.csv");
   csv << "dx,particles,steps,time,flux_variation,reynolds,midline_vy_max_rel,"
@@ -84,11 +84,11 @@ StudyResult run_throttled_pipe_study(const StudyContext& ctx) {
   md << "# Throttled pipe (Barker & Neethling §4.1, Figs. 8-9)\n\n"
      << "Case `cases/throttled_pipe.yaml`: periodic channel L_x = 0.024, L_y = 0.01, top and "
         "bottom walls cubic B-splines (NURBS, weights 1) narrowing to L_y/2 at mid-length, "
-        "rho = 1000, mu = 0.01, body force 200 Pa/m (set for Re = rho Q / mu ~ 30; the "
-        "lubrication estimate, 95 Pa/m, gave Re = 13.4), `boundary: {method: ghost, map: "
-        "mirror_beta, velocity: no_slip}`, summation density, Tait EOS with c0 = 1 m/s. "
-        "Particles in wall-fitted columns, started from the lubrication flow with Q = 3e-4 "
-        "m^2/s (Re = 30) and run to t = "
+        "rho = 1000, mu = 0.01, body force 200 Pa/m (the lubrication estimate for Re = rho Q / "
+        "mu = 30 is 95 Pa/m, which gave Re = 13.4; see the case file), `boundary: {method: "
+        "ghost, map: mirror_beta, velocity: no_slip}`, summation density, Tait EOS with c0 = 1 "
+        "m/s, p0 = 100 Pa. Particles in wall-fitted columns, started from the lubrication flow "
+        "with Q = 2e-4 m^2/s (Re = 20) and run to t = "
      << t_ends.front() << " s (dx = " << dxs.front() << ")"
      << (dxs.size() > 1 ? fmt::format(" and {} s (dx = {})", t_ends.back(), dxs.back()) : "")
      << ". Regenerate with `build/curvsph validate throttled_pipe`.\n\n"

@@ -10,6 +10,7 @@
 
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/analysis/throttled_pipe.hpp"
+#include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/geometry/nurbs_curve_wall.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -108,6 +109,44 @@ TEST(ThrottledPipeCase, WallsAreSmoothAndMatchAcrossTheSeam) {
     }
     // The kernel fits the wall: smallest radius of curvature > 2h at the case resolution.
     EXPECT_GT(w.min_radius_of_curvature(), reach);
+  }
+}
+
+TEST(ThrottledPipeCase, GhostsWrapAndAreSeenAcrossTheSeam) {
+  // Two particles 0.3 mm above the bottom wall, 0.1 mm either side of the periodic seam:
+  // each gets its mirror ghost (flat wall: beta = 1, 0.3 mm below the wall) inside the
+  // periodic box, and each sees the other's ghost through the periodic cell list.
+  const Case c = read_case(kCase, {"resolution.dx=5e-4"});
+  const WallSet<2> walls = case_walls(c);
+  const Real support = static_cast<Real>(2 * c.h());
+  CellList<2> cells;
+  cells.configure(support, c.domain_min, c.domain_max, c.periodic);
+  const std::vector<Vec<2>> x = {Vec<2>(kLx / 2 - 1e-4, -kLy / 2 + 3e-4),
+                                 Vec<2>(-kLx / 2 + 1e-4, -kLy / 2 + 3e-4)};
+  const std::vector<Vec<2>> v = {Vec<2>(0.01, 0), Vec<2>(0.01, 0)};
+  GhostSet<2> G;
+  GhostOptions<2> opt;
+  opt.map = GhostMapKind::mirror_beta;
+  opt.velocity = GhostVelocity::no_slip;
+  opt.support = support;
+  opt.cells = &cells;
+  G.build(x, v, walls, opt);
+  ASSERT_EQ(G.size(), 2u);  // the top wall is 9.7 mm away
+  EXPECT_TRUE(G.penetrated.empty());
+  for (std::size_t g = 0; g < 2; ++g) {
+    EXPECT_EQ(G.wall[g], 0);
+    EXPECT_NEAR(G.x[g].y(), -kLy / 2 - 3e-4, 1e-12);
+    EXPECT_NEAR(G.x[g].x(), x[G.source[g]].x(), 1e-12);
+    EXPECT_NEAR(G.beta[g], 1.0, 1e-12);
+    EXPECT_NEAR(G.v[g].x(), -0.01, 1e-12);  // no slip: -u across a resting wall
+  }
+  CellList<2> gcells;
+  gcells.configure(support, c.domain_min, c.domain_max, c.periodic);
+  gcells.build(G.x);
+  for (std::size_t i = 0; i < 2; ++i) {
+    int seen = 0;
+    gcells.for_each_neighbor(x[i], G.x, [&](Index, const Vec<2>&, Real) { ++seen; });
+    EXPECT_EQ(seen, 2) << "particle " << i;
   }
 }
 

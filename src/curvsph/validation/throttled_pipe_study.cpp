@@ -99,7 +99,9 @@ StudyResult run_throttled_pipe_study(const StudyContext& ctx) {
         "profile of the wide section at the periodic seam as reference and R(x) measured "
         "between the walls; `throat_vx_rel_error` the same across the throat section.\n\n"
      << table << "\n"
-     << summary_markdown(r.summary)
+     << summary_markdown(r.summary) << "\n"
+     << "Read the flux history (dx_*/throttled_pipe_history.csv, right panel of flux.png) "
+        "before the figures: a run that still drifts is not at steady state.\n"
      << "\n![velocity magnitude](velocity_field.png)\n\n![midline profiles](profiles.png)\n\n"
         "![flux](flux.png)\n";
   return r;

@@ -14,7 +14,9 @@ for name in sorted(os.listdir(root)):
     if not os.path.isfile(path):
         continue
     for row in json.load(open(path)):
-        lines.append(f"| [{name}]({name}/README.md) | `{row['figure']}` | {row['value']:.4g} | "
+        value = row["value"]
+        shown = "n/a" if value is None else f"{value:.4g}"  # NaN is written as null
+        lines.append(f"| [{name}]({name}/README.md) | `{row['figure']}` | {shown} | "
                      f"{row['target']} | {row['reference']} | "
                      f"{'pass' if row['pass'] else '**miss**'} |")
 open(os.path.join(root, "README.md"), "w").write("\n".join(lines) + "\n")

@@ -10,6 +10,7 @@ StudyResult run_poiseuille_study(const StudyContext& ctx);        // poiseuille_
 StudyResult run_node_density_study(const StudyContext& ctx);      // node_density_study.cpp
 StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_study.cpp
 StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
+StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_pipe_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -27,6 +28,9 @@ const std::vector<Study>& validation_studies() {
        &run_ghost_cost_study},
       {"cylinder_lattice", "Lattice of cylinders: v_y field and t_max (Vela Vela Figs. 9-10)",
        &run_cylinder_lattice_study},
+      {"throttled_pipe",
+       "Throttled pipe with NURBS walls (Barker Figs. 8-9): flux, eq. 48 profiles",
+       &run_throttled_pipe_study},
   };
   return studies;
 }

@@ -30,9 +30,9 @@ StudyResult run_node_density_study(const StudyContext& ctx) {
       sets.push_back(fmt::format("resolution.dx={}", 2 * full.dx));
       sets.push_back("setup.relax.max_steps=300");
     } else {
-      // Shortened for a shared 2-core machine: 100 relaxation steps (~3 min per shape at 5e4
+      // Shortened for a shared 2-core machine: 250 relaxation steps (~6 min per shape at 5e4
       // particles); the case's own default is 1500. The spread reached is in the table.
-      sets.push_back("setup.relax.max_steps=100");
+      sets.push_back("setup.relax.max_steps=250");
     }
     const Case c = read_case(path, sets);
     RunOptions o;
@@ -70,7 +70,7 @@ StudyResult run_node_density_study(const StudyContext& ctx) {
         "map and with the density-preserving map, and the node density n (eq. 3, over fluid "
         "and ghosts) is evaluated. `dev` = mean |n_ghost / n_ref - 1| over the ghosts within 2h "
         "of the wall, n_ref the mean n of the fluid particles deeper than 2h. Regenerate with "
-        "`build/curvsph validate node_density` (relaxation shortened to 100 steps per shape)"
+        "`build/curvsph validate node_density` (relaxation shortened to 250 steps per shape)"
      << (ctx.quick ? " (this is a --quick run: dx doubled)" : "") << ".\n\n"
      << table << "\n"
      << summary_markdown(r.summary)

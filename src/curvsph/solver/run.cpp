@@ -118,6 +118,21 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     progress.finish();
     log("UNSTABLE: {}", e.what());
     write_snapshot("particles_unstable.vtp");
+    // The analyses still report the state the run reached (a study plots a failed run up to
+    // its failure): metrics.json with "unstable": true, then exit 3 as before.
+    if (o.write_files) {
+      nlohmann::json m;
+      m["particles"] = P.size();
+      m["steps"] = solver.steps();
+      m["threads"] = omp_get_max_threads();
+      m["time_reached"] = solver.time();
+      m["wall_seconds"] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      m["unstable"] = true;
+      m["unstable_message"] = e.what();
+      for (auto& a : analyses) a->finish(solver.time(), solver.particles(), m, o.out_dir);
+      std::ofstream(o.out_dir / "metrics.json") << m.dump(2) << '\n';
+    }
     throw;
   }
   progress.update(solver.steps(), solver.time(), solver.dt(), true);

@@ -47,6 +47,7 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_particles = false;
+  bool wall_force = false;  // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
 };
 
 struct ProbeSpec {

@@ -1,5 +1,6 @@
 // The table of analyses and initial flow fields: one line per entry.
 #include "curvsph/analysis/analysis.hpp"
+#include "curvsph/analysis/hydrostatic_analysis.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/core/error.hpp"
 
@@ -16,6 +17,7 @@ struct Entry {
 
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
+    {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial},
 };
 const Entry<3> kEntries3[] = {
     {"", nullptr, nullptr},

@@ -47,7 +47,8 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_particles = false;
-  bool wall_force = false;  // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
+  bool wall_force = false;
+  std::string pressure = "symmetric";  // integrals: symmetric | consistent near-wall grad p  // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
 };
 
 struct ProbeSpec {

@@ -26,23 +26,23 @@ struct TankRun {
   double tau_end;  // reduced end time t sqrt(g/H) asked for
 };
 
-constexpr double kTauFull = 20.0;
-
 }  // namespace
 
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   const auto case_path = ctx.source_dir / "cases" / "hydrostatic_tank.yaml";
-  // Full study: N ~ 10^4 to the paper's t sqrt(g/H) = 20 in both modes; the finer runs as far
-  // as the time budget of the study allows (see the README).
+  // The paper runs every case to t sqrt(g/H) = 20. On the 2 shared cores this study was
+  // generated on (about 5e4 particle steps per second) that is 80 min for N ~ 10^4 alone, so
+  // every run is shortened to fit about 25 min in all (the README says so): N ~ 10^4 to
+  // t sqrt(g/H) = 2 in both modes, the finer ones only through their first acoustic periods.
+  // Raise tau_end here on a bigger machine.
   std::vector<TankRun> runs;
   if (ctx.quick) {
     runs = {{70, 2, "geometric", 2.0}, {70, 2, "volume", 2.0}};
   } else {
-    runs = {{140, 2, "geometric", kTauFull}, {140, 2, "volume", kTauFull},
-            {316, 2, "geometric", 10.0},     {316, 2, "volume", 10.0},
-            {446, 2, "geometric", 5.0},      {446, 2, "volume", 5.0},
-            {446, 3, "geometric", 2.5},      {446, 4, "geometric", 2.0},
-            {446, 3, "volume", 2.5},         {446, 4, "volume", 2.0}};
+    runs = {{140, 2, "geometric", 2.0},   {140, 2, "volume", 2.0},
+            {316, 2, "geometric", 0.05},  {316, 2, "volume", 0.05},
+            {446, 2, "geometric", 0.005}, {446, 3, "geometric", 0.005},
+            {446, 4, "geometric", 0.005}};
   }
   const double H = 0.5, g = 9.81;
   const double t_ref = std::sqrt(H / g);
@@ -127,11 +127,15 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   if (ctx.quick) md << "**Quick run** (`--quick`): N ~ 2500, t sqrt(g/H) = 2 only.\n\n";
   md << "## Runs\n\n"
      << table
-     << "\nThe column 'asked' is the end time each run was given. Only the N ~ 10^4 runs go to "
-        "the paper's t sqrt(g/H) = 20; the finer runs are **shortened** to what fits the "
-        "study's time budget (`tau_end` in `hydrostatic_tank_study.cpp`). A run marked failed "
-        "stopped with an instability (a particle through a wall or a density out of range) "
-        "at the time shown.\n\n## Summary\n\n"
+     << "\nThe column 'asked' is the end time each run was given. **Every run is shortened** "
+        "against the paper's t sqrt(g/H) = 20: the study had about 25 min on 2 shared cores "
+        "(~5e4 particle steps/s), so N ~ 10^4 runs to t sqrt(g/H) = 2 in both modes, N ~ 5 "
+        "10^4 to 0.05 and N ~ 10^5 (h/dx = 2, 3, 4, geometric only; the volume runs at 10^5 "
+        "were dropped) to 0.005, i.e. the finer runs show only the start-up transient. The "
+        "targets below are therefore checked at the time reached, not at t sqrt(g/H) = 20; "
+        "raise `tau_end` in `hydrostatic_tank_study.cpp` on a bigger machine. A run marked "
+        "failed stopped with an instability (a particle through a wall or a density out of "
+        "range) at the time shown.\n\n## Summary\n\n"
      << summary_markdown(r.summary)
      << "\n## Figures\n\n![kinetic energy](kinetic_energy.png)\n\n"
         "![pressure error](pressure_error.png)\n\n![pressure profile](pressure_profile.png)\n\n"

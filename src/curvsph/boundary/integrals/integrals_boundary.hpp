@@ -4,8 +4,10 @@
 // 2015; Ferrand et al. 2013 for the semi-analytical variant) with the Shepard factor gamma of
 // Calderon-Sanchez et al. The derivation of every wall term is in integrals_boundary.cpp.
 //
-// Optional key: `boundary.wall_force: true` adds a short-range repulsion for particles closer
-// than 0.1 dx to a wall (Calderon §3.2; off by default).
+// Optional keys: `boundary.wall_force: true` adds a short-range repulsion for particles closer
+// than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
+// symmetric` chooses the near-wall pressure gradient (item 2b of the .cpp; symmetric by
+// default).
 #include <memory>
 #include <vector>
 
@@ -52,6 +54,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   ShepardMode mode_;
   ShepardQuadrature quad_;
   bool wall_force_ = false;
+  bool consistent_ = false;  // boundary.pressure: symmetric (default) | consistent
   Real dx_ = 0;
   bool built_ = false;
 

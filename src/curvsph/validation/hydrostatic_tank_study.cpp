@@ -7,6 +7,7 @@
 // plots of scripts/plot_hydrostatic_tank.py and README.md.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -39,10 +40,9 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   if (ctx.quick) {
     runs = {{70, 2, "geometric", 2.0}, {70, 2, "volume", 2.0}};
   } else {
-    runs = {{140, 2, "geometric", 2.0},   {140, 2, "volume", 2.0},
-            {316, 2, "geometric", 0.05},  {316, 2, "volume", 0.05},
-            {446, 2, "geometric", 0.005}, {446, 3, "geometric", 0.005},
-            {446, 4, "geometric", 0.005}};
+    runs = {{140, 2, "geometric", 2.0}, {140, 2, "volume", 2.0},     {316, 2, "geometric", 0.1},
+            {316, 2, "volume", 0.1},    {446, 2, "geometric", 0.02}, {446, 3, "geometric", 0.02},
+            {446, 4, "geometric", 0.02}};
   }
   const double H = 0.5, g = 9.81;
   const double t_ref = std::sqrt(H / g);
@@ -58,11 +58,12 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     const double dx = 1.0 / run.cells;
     const std::string tag = fmt::format("n{}_h{}_{}", run.cells, run.h_over_dx, run.shepard);
     const double t_end = run.tau_end * t_ref;
-    Case c = read_case(case_path,
-                       {fmt::format("resolution.dx={:.17g}", dx),
-                        fmt::format("resolution.h_over_dx={}", run.h_over_dx),
-                        "boundary.shepard=" + run.shepard, fmt::format("time.end={:.17g}", t_end),
-                        fmt::format("output.every={:.17g}", t_end / 100), "output.vtk=false"});
+    Case c = read_case(
+        case_path,
+        {fmt::format("resolution.dx={:.17g}", dx),
+         fmt::format("resolution.h_over_dx={}", run.h_over_dx), "boundary.shepard=" + run.shepard,
+         fmt::format("time.end={:.17g}", t_end),
+         fmt::format("output.every={:.17g}", std::max(t_end / 100, 1e-4)), "output.vtk=false"});
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
     o.threads = ctx.threads;
@@ -95,7 +96,14 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     r.metrics[tag + "_unstable"] = unstable;
     if (run.shepard == "geometric") {
       const std::string ref =
-          fmt::format("Calderon §3.1, N = {}, h/dx = {}, t√(g/H) = {:.2f}", n, run.h_over_dx, tau);
+          fmt::format("Calderon §3.1, N = {}, h/dx = {}, t√(g/H) = {:.3g}", n, run.h_over_dx, tau);
+      if (run.tau_end < 1) {
+        // Too short to say anything about the targets (start-up transient only): reported.
+        const std::string t = "reported (run shortened)";
+        r.summary.push_back({"hydrostatic_tank." + tag + ".pressure_l2_error", pe, t, ref, true});
+        r.summary.push_back({"hydrostatic_tank." + tag + ".kinetic_energy_max", ke, t, ref, true});
+        continue;
+      }
       const bool reached = !unstable && tau >= run.tau_end * (1 - 1e-6);
       r.summary.push_back({"hydrostatic_tank." + tag + ".escaped_particles",
                            static_cast<double>(escaped), "= 0", ref, escaped == 0 && reached});
@@ -130,9 +138,10 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
      << "\nThe column 'asked' is the end time each run was given. **Every run is shortened** "
         "against the paper's t sqrt(g/H) = 20: the study had about 25 min on 2 shared cores "
         "(~5e4 particle steps/s), so N ~ 10^4 runs to t sqrt(g/H) = 2 in both modes, N ~ 5 "
-        "10^4 to 0.05 and N ~ 10^5 (h/dx = 2, 3, 4, geometric only; the volume runs at 10^5 "
-        "were dropped) to 0.005, i.e. the finer runs show only the start-up transient. The "
-        "targets below are therefore checked at the time reached, not at t sqrt(g/H) = 20; "
+        "10^4 to 0.1 and N ~ 10^5 (h/dx = 2, 3, 4, geometric only; the volume runs at 10^5 "
+        "were dropped) to 0.02, i.e. the finer runs show only the start-up transient and their "
+        "summary rows are reported, not checked. The N ~ 10^4 targets are checked at "
+        "t sqrt(g/H) = 2, not 20; "
         "raise `tau_end` in `hydrostatic_tank_study.cpp` on a bigger machine. A run marked "
         "failed stopped with an instability (a particle through a wall or a density out of "
         "range) at the time shown.\n\n## Summary\n\n"

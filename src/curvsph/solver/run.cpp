@@ -119,7 +119,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     log("UNSTABLE: {}", e.what());
     write_snapshot("particles_unstable.vtp");
     // The analyses still report the state the run reached (a study plots a failed run up to
-    // its failure): metrics.json with "unstable": true, then exit 3 as before.
+    // its failure): metrics_unstable.json (metrics.json stays the mark of a finished run),
+    // then exit 3 as before.
     if (o.write_files) {
       nlohmann::json m;
       m["particles"] = P.size();
@@ -131,7 +132,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       m["unstable"] = true;
       m["unstable_message"] = e.what();
       for (auto& a : analyses) a->finish(solver.time(), solver.particles(), m, o.out_dir);
-      std::ofstream(o.out_dir / "metrics.json") << m.dump(2) << '\n';
+      std::ofstream(o.out_dir / "metrics_unstable.json") << m.dump(2) << '\n';
     }
     throw;
   }

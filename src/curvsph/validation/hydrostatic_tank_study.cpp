@@ -73,7 +73,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
       m = run_case(c, o);
     } catch (const InstabilityError& e) {
       std::cerr << tag << ": " << e.what() << "\n";
-      std::ifstream in(o.out_dir / "metrics.json");
+      std::ifstream in(o.out_dir / "metrics_unstable.json");
       m = nlohmann::json::parse(in);
     }
     const bool unstable = m.value("unstable", false);

@@ -5,6 +5,7 @@
 #include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/poiseuille_analysis.hpp"
 #include "curvsph/analysis/static_droplet.hpp"
+#include "curvsph/analysis/hydrostatic_analysis.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/analysis/throttled_pipe.hpp"
 #include "curvsph/core/error.hpp"
@@ -28,6 +29,7 @@ const Entry<2> kEntries2[] = {
     {"node_density", &make_node_density_analysis<2>, nullptr},
     {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
     {"throttled_pipe", &make_throttled_pipe_analysis, &throttled_pipe_initial},
+    {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},

@@ -7,6 +7,14 @@
 //   add_accelerations() after the fluid pair pass, before body forces,
 // so the fluid pair loops never branch on the boundary method. prepare() also reports
 // particles that went through a wall (the solver stops with exit 3).
+//
+// Renormalising models (boundary integrals with a Shepard factor gamma_i): the fluid passes
+// (density_summation, continuity_rate with its delta-SPH term, fluid_forces) sum over fluid
+// neighbours only and never divide by gamma. Such a model divides what is accumulated when
+// its hook runs by gamma_i itself: add_density() sigma_i (and rho_i = m_i sigma_i),
+// add_density_rate() drho_i, add_accelerations() a_i (pressure + viscous; body forces are
+// added after the hook and are not renormalised), and then adds its wall terms, already
+// divided by gamma_i. Additive models (ghosts) leave the fluid part as it is.
 #include <memory>
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 // The table of boundary treatments: one line per method.
 #include "curvsph/boundary/boundary_model.hpp"
 #include "curvsph/boundary/ghost/ghost_boundary.hpp"
+#include "curvsph/boundary/integrals/integrals_boundary.hpp"
 #include "curvsph/core/error.hpp"
 
 namespace curvsph {
@@ -16,6 +17,7 @@ template <int D>
 const std::vector<MethodEntry<D>>& methods() {
   static const std::vector<MethodEntry<D>> table = {
       {"ghost", &make_ghost_boundary<D>},
+      {"integrals", &make_integrals_boundary<D>},
   };
   return table;
 }

@@ -142,7 +142,25 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     bool absorbed = false;
     for (auto& a : analyses)
       absorbed |= a->absorb_instability(solver.time(), solver.particles(), e);
-    if (!absorbed) throw;
+    if (!absorbed) {
+      // The analyses still report the state the run reached (a study plots a failed run up to
+      // its failure): metrics_unstable.json (metrics.json stays the mark of a finished run),
+      // then exit 3 as before.
+      if (o.write_files) {
+        nlohmann::json m;
+        m["particles"] = P.size();
+        m["steps"] = solver.steps();
+        m["threads"] = omp_get_max_threads();
+        m["time_reached"] = solver.time();
+        m["wall_seconds"] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+        m["unstable"] = true;
+        m["unstable_message"] = e.what();
+        for (auto& a : analyses) a->finish(solver.time(), solver.particles(), m, o.out_dir);
+        std::ofstream(o.out_dir / "metrics_unstable.json") << m.dump(2) << '\n';
+      }
+      throw;
+    }
     unstable = true;
     log("the run stops at t = {:.6g}; the analyses record the event", solver.time());
   }

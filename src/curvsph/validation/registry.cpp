@@ -11,6 +11,7 @@ StudyResult run_node_density_study(const StudyContext& ctx);      // node_densit
 StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_study.cpp
 StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
 StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_pipe_study.cpp
+StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic_tank_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -31,6 +32,9 @@ const std::vector<Study>& validation_studies() {
       {"throttled_pipe",
        "Throttled pipe with NURBS walls (Barker Figs. 8-9): flux, eq. 48 profiles",
        &run_throttled_pipe_study},
+      {"hydrostatic_tank",
+       "2-D tank at rest, boundary integrals, geometric vs volume Shepard (Calderon §3.1)",
+       run_hydrostatic_tank_study},
   };
   return studies;
 }

@@ -312,18 +312,24 @@ double subtended_angle<3>(const BoundaryElements<3>& el, std::size_t j, const Ve
   return omega;
 }
 
-template <int D>
-double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
-                         const ShepardQuadrature& quad) {
+namespace {
+
+// The geometric factor over the elements `for_each(fn)` visits (all, or a candidate list).
+template <int D, class ForEach>
+double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                      const ShepardQuadrature& quad, const ForEach& for_each) {
   const BoundaryKernel<D> F(h);
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
-  std::vector<std::size_t> near, touched;
+  // Thread-local scratch: the solver calls this for every particle near a wall, every step.
+  thread_local std::vector<std::size_t> near, touched;
+  near.clear();
+  touched.clear();
   VecD<D> mean_normal = VecD<D>::Zero();
   double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
-  for (std::size_t j = 0; j < el.size(); ++j) {
-    if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) continue;
+  for_each([&](std::size_t j) {
+    if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) return;
     near.push_back(j);
     const double d = element_distance(el, j, x);
     bool hit = d <= tol;
@@ -340,7 +346,7 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
       mean_normal += el.normal[j];
       touched.push_back(j);
     }
-  }
+  });
   // On the wall: the singular part is the limit from the fluid side along the mean normal of
   // the touched elements (makes contact points, vertices and corner apexes exact); a point
   // behind a curved-wall element by less than its gap is first moved to its fluid side.
@@ -360,25 +366,63 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
   return 1.0 - angles / sphere_measure<D>() - poly;
 }
 
+}  // namespace
+
 template <int D>
-double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h,
-                          const ShepardQuadrature& quad) {
+double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                         const ShepardQuadrature& quad) {
+  return geometric_impl<D>(el, x, h, quad, [&](const auto& fn) {
+    for (std::size_t j = 0; j < el.size(); ++j) fn(j);
+  });
+}
+
+template <int D>
+double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
+                         const VecD<D>& x, double h, const ShepardQuadrature& quad) {
+  return geometric_impl<D>(el, x, h, quad, [&](const auto& fn) {
+    for (std::size_t j : candidates) fn(j);
+  });
+}
+
+namespace {
+
+template <int D, class ForEach>
+double monolithic_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                       const ShepardQuadrature& quad, const ForEach& for_each) {
   const BoundaryKernel<D> F(h);
   const double tol = quad.on_wall_tolerance * h;
   double sum = 0;
   bool on_contour = false;
-  for (std::size_t j = 0; j < el.size(); ++j) {
+  for_each([&](std::size_t j) {
     const VecD<D> r = el.centre[j] - x;
     const double rn = r.norm();
-    if (rn - el.bounding_radius(j) >= 2.0 * h) continue;
+    if (rn - el.bounding_radius(j) >= 2.0 * h) return;
     if (quad.monolithic_contour_half && element_distance(el, j, x) <= tol) {
       on_contour = true;  // the element x lies on: replaced by the exact -1/2 below
-      continue;
+      return;
     }
-    if (rn >= 2.0 * h || rn <= 1e-12 * h) continue;
+    if (rn >= 2.0 * h || rn <= 1e-12 * h) return;
     sum += el.normal[j].dot(r) * F.value(rn) * el.area[j];
-  }
+  });
   return 1.0 - sum - (on_contour ? 0.5 : 0.0);
+}
+
+}  // namespace
+
+template <int D>
+double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h,
+                          const ShepardQuadrature& quad) {
+  return monolithic_impl<D>(el, x, h, quad, [&](const auto& fn) {
+    for (std::size_t j = 0; j < el.size(); ++j) fn(j);
+  });
+}
+
+template <int D>
+double shepard_monolithic(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
+                          const VecD<D>& x, double h, const ShepardQuadrature& quad) {
+  return monolithic_impl<D>(el, x, h, quad, [&](const auto& fn) {
+    for (std::size_t j : candidates) fn(j);
+  });
 }
 
 template <int D>
@@ -421,15 +465,19 @@ std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& 
   return out;
 }
 
-#define CURVSPH_SHEPARD_INSTANTIATE(D)                                                      \
-  template double shepard_geometric<D>(const BoundaryElements<D>&, const VecD<D>&, double,  \
-                                       const ShepardQuadrature&);                           \
-  template double shepard_monolithic<D>(const BoundaryElements<D>&, const VecD<D>&, double, \
-                                        const ShepardQuadrature&);                          \
-  template double shepard_volume<D>(std::span<const VecD<D>>, std::span<const double>,      \
-                                    const VecD<D>&, double);                                \
-  template std::vector<double> shepard_factor<D>(                                           \
-      ShepardMode, const BoundaryElements<D>&, std::span<const VecD<D>>, double,            \
+#define CURVSPH_SHEPARD_INSTANTIATE(D)                                                            \
+  template double shepard_geometric<D>(const BoundaryElements<D>&, const VecD<D>&, double,        \
+                                       const ShepardQuadrature&);                                 \
+  template double shepard_monolithic<D>(const BoundaryElements<D>&, const VecD<D>&, double,       \
+                                        const ShepardQuadrature&);                                \
+  template double shepard_geometric<D>(const BoundaryElements<D>&, std::span<const std::size_t>,  \
+                                       const VecD<D>&, double, const ShepardQuadrature&);         \
+  template double shepard_monolithic<D>(const BoundaryElements<D>&, std::span<const std::size_t>, \
+                                        const VecD<D>&, double, const ShepardQuadrature&);        \
+  template double shepard_volume<D>(std::span<const VecD<D>>, std::span<const double>,            \
+                                    const VecD<D>&, double);                                      \
+  template std::vector<double> shepard_factor<D>(                                                 \
+      ShepardMode, const BoundaryElements<D>&, std::span<const VecD<D>>, double,                  \
       std::span<const VecD<D>>, std::span<const double>, const ShepardQuadrature&);
 CURVSPH_SHEPARD_INSTANTIATE(2)
 CURVSPH_SHEPARD_INSTANTIATE(3)

@@ -56,6 +56,15 @@ template <int D>
 double shepard_monolithic(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                           const ShepardQuadrature& quad = {});
 
+// The same over a candidate list of element indices (e.g. from a cell list over element
+// centres): every element that reaches into the support ball of x must be in it; others may be.
+template <int D>
+double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
+                         const VecD<D>& x, double h, const ShepardQuadrature& quad = {});
+template <int D>
+double shepard_monolithic(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
+                          const VecD<D>& x, double h, const ShepardQuadrature& quad = {});
+
 template <int D>
 double shepard_volume(std::span<const VecD<D>> positions, std::span<const double> volumes,
                       const VecD<D>& x, double h);

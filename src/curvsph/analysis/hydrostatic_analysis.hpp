@@ -1,0 +1,31 @@
+#pragma once
+// A liquid at rest under gravity (Calderon et al. §3.1, the 2-D hydrostatic tank):
+//   p(y) = rho0 g (y_s - y),  y_s = bottom + depth (the free surface),
+// with g = |gravity| acting along -y. Parameters (both for `analysis:` and `initial:`):
+//   {depth: H, bottom: 0}   (bottom defaults to 0).
+#include "curvsph/analysis/analysis.hpp"
+
+namespace curvsph {
+
+struct Hydrostatic {
+  double depth = 0.5, bottom = 0, rho0 = 1000, g = 9.81;
+  double surface() const { return bottom + depth; }
+  double pressure(double y) const { return rho0 * g * (surface() - y); }
+};
+
+Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const std::string& key);
+
+// Figures: kinetic_energy_max (max over output times of sum 1/2 m |u|^2 / (M g H)),
+// kinetic_energy_final, pressure_l2_error (RMS of p - rho0 g (y_s - y) over the particles at
+// the end, over rho0 g H), escaped_particles (at the wall or beyond it at the end),
+// t_end_reached (t sqrt(g/H) at the end). Writes hydrostatic_history.csv (time, reduced
+// time, reduced kinetic energy, reduced pressure error at every output time) and
+// hydrostatic_profile.csv (y, p, p_exact of every particle at the end).
+std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c);
+// p = rho0 g (y_s - y) (clamped at 0 above the surface), rho from the EOS, mass = rho * the
+// lattice volume (so sigma = rho/m keeps the lattice's number density; see
+// taylor_green_initial), velocity 0.
+void hydrostatic_initial(const Case& c, const YAML::Node& params, const Eos& eos,
+                         const std::vector<Real>& rho0, Particles<2>& P);
+
+}  // namespace curvsph

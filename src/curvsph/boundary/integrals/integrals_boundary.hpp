@@ -1,0 +1,77 @@
+#pragma once
+// `boundary: {method: integrals, shepard: geometric | volume | monolithic | none}`: walls
+// closed by boundary elements (numerical boundary integrals: Macià et al. 2012, Cercos-Pita
+// 2015; Ferrand et al. 2013 for the semi-analytical variant) with the Shepard factor gamma of
+// Calderon-Sanchez et al. The derivation of every wall term is in integrals_boundary.cpp.
+//
+// Optional keys: `boundary.wall_force: true` adds a short-range repulsion for particles closer
+// than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
+// symmetric` chooses the near-wall pressure gradient (item 2b of the .cpp; symmetric by
+// default).
+#include <memory>
+#include <vector>
+
+#include "curvsph/boundary/boundary_model.hpp"
+#include "curvsph/boundary/integrals/boundary_elements.hpp"
+#include "curvsph/boundary/integrals/shepard.hpp"
+
+namespace curvsph {
+
+template <int D>
+class IntegralsBoundary final : public BoundaryModel<D> {
+ public:
+  explicit IntegralsBoundary(const BoundaryContext<D>& ctx);
+
+  std::string name() const override { return "integrals"; }
+  void check_setup(const Particles<D>& P, const std::string& file) override;
+  void prepare(const Particles<D>& P, Real t) override;
+  void add_density(Particles<D>& P) override;
+  void add_density_rate(Particles<D>& P) override;
+  void add_accelerations(Particles<D>& P) override;
+  const std::vector<Index>& penetrated() const override { return penetrated_; }
+  void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override;
+
+  // The Shepard factor of every particle from the last prepare().
+  const std::vector<Real>& gamma() const { return gamma_; }
+  const BoundaryElements<D>& elements() const { return el_; }
+  // Wall pressure of every element from the last add_accelerations().
+  const std::vector<Real>& wall_pressure() const { return p_wall_; }
+
+ private:
+  void build_elements(const Particles<D>& P);
+  // Calls f(b, r_ib = x_i - x_b (periodic image applied), r2) for the elements whose
+  // centre is within the candidate radius 2h + (largest element radius) of x.
+  template <class F>
+  void for_each_element(const Vec<D>& x, F&& f) const {
+    elem_cells_.for_each_neighbor(x, ex_, f);
+  }
+
+  const Case& spec_;
+  const WallSet<D>& walls_;
+  const WendlandC2<D>& W_;
+  const FluidParams<D>& F_;
+  const CellList<D>& fluid_cells_;
+  ShepardMode mode_;
+  ShepardQuadrature quad_;
+  bool wall_force_ = false;
+  bool consistent_ = false;  // boundary.pressure: symmetric (default) | consistent
+  Real dx_ = 0;
+  bool built_ = false;
+
+  BoundaryElements<D> el_;
+  std::vector<Vec<D>> ex_, en_, eu_;  // element centre, normal (into the fluid), velocity
+  std::vector<Real> ea_;              // element area (length in 2-D)
+  CellList<D> elem_cells_;            // over element centres, radius 2h + max element radius
+
+  std::vector<Real> gamma_;
+  std::vector<Real> p_wall_;
+  std::vector<Index> penetrated_;
+  std::vector<unsigned char> near_;  // particle has elements within the candidate radius
+  std::vector<Real> wall_dist_;      // distance to the nearest wall (near particles only)
+  std::vector<Vec<D>> wall_normal_;
+};
+
+template <int D>
+std::unique_ptr<BoundaryModel<D>> make_integrals_boundary(const BoundaryContext<D>& ctx);
+
+}  // namespace curvsph

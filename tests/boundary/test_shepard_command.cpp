@@ -1,8 +1,6 @@
 // The built `curvsph shepard` binary on a small circle case: columns, the values of every
 // mode, and exit code 2 with a clear message for bad arguments.
 #include <gtest/gtest.h>
-
-#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "../support/command_fixture.hpp"
 
 namespace {
 

@@ -45,11 +45,21 @@ void check_against_brute_force(std::array<bool, 3> periodic, unsigned seed) {
   EXPECT_GT(pairs, static_cast<long>(x.size()));  // the test must see real neighbourhoods
 }
 
-TEST(CellList, MatchesBruteForce2DPeriodic) { check_against_brute_force<2>({true, true, false}, 1); }
-TEST(CellList, MatchesBruteForce2DMixed) { check_against_brute_force<2>({true, false, false}, 2); }
-TEST(CellList, MatchesBruteForce2DOpen) { check_against_brute_force<2>({false, false, false}, 3); }
-TEST(CellList, MatchesBruteForce3DPeriodic) { check_against_brute_force<3>({true, true, true}, 4); }
-TEST(CellList, MatchesBruteForce3DMixed) { check_against_brute_force<3>({false, true, false}, 5); }
+TEST(CellList, MatchesBruteForce2DPeriodic) {
+  check_against_brute_force<2>({true, true, false}, 1);
+}
+TEST(CellList, MatchesBruteForce2DMixed) {
+  check_against_brute_force<2>({true, false, false}, 2);
+}
+TEST(CellList, MatchesBruteForce2DOpen) {
+  check_against_brute_force<2>({false, false, false}, 3);
+}
+TEST(CellList, MatchesBruteForce3DPeriodic) {
+  check_against_brute_force<3>({true, true, true}, 4);
+}
+TEST(CellList, MatchesBruteForce3DMixed) {
+  check_against_brute_force<3>({false, true, false}, 5);
+}
 
 TEST(CellList, WrapKeepsPointsInTheBox) {
   CellList<2> cells;

@@ -1,8 +1,6 @@
 // The built `curvsph geometry` binary: columns and values of its CSV, and exit code 2 with
 // the file, key or line named for bad input.
 #include <gtest/gtest.h>
-
-#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,6 +10,8 @@
 #include <numbers>
 #include <sstream>
 #include <vector>
+
+#include "../support/command_fixture.hpp"
 
 namespace {
 

@@ -60,8 +60,9 @@ TEST(GeometryParser, NurbsAndCadShapesAreWired) {
   const std::string w = "0.7071067811865476";
   const std::string circle =
       "[{shape: nurbs_curve, degree: 2, fluid: left, control_points: [[1, 0], [1, 1], [0, 1], "
-      "[-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]], weights: [1, " + w + ", 1, " + w +
-      ", 1, " + w + ", 1, " + w + ", 1], knots: [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]}]";
+      "[-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]], weights: [1, " +
+      w + ", 1, " + w + ", 1, " + w + ", 1, " + w +
+      ", 1], knots: [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]}]";
   const WallSet<2> walls = parse<2>(circle);
   const auto p = walls.closest(Vec2d(0.3, 0.4));
   EXPECT_NEAR(p.distance, 0.5, 1e-9);

@@ -2,8 +2,6 @@
 // overrides (list elements by index, new nested keys), YAML syntax errors name the line, and
 // the built `curvsph run` exits with 2 on bad input and 3 (with a last snapshot) when unstable.
 #include <gtest/gtest.h>
-
-#include "../support/command_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -16,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/command_fixture.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/io/case_overrides.hpp"

@@ -40,17 +40,19 @@ nlohmann::json run_quiet(const Case& c) {
 }
 
 TEST(Relax, ReducesNodeDensitySpreadInDisk) {
-  const auto m = run_quiet(disk_case("{random_seed: 3, relax: {max_steps: 300, tolerance: 1.0e-4}}"));
+  const auto m =
+      run_quiet(disk_case("{random_seed: 3, relax: {max_steps: 300, tolerance: 1.0e-4}}"));
   const double before = m["relax_node_density_spread_initial"];
   const double after = m["relax_node_density_spread"];
-  EXPECT_GT(before, 0.1);            // random positions: a wide spread
-  EXPECT_LT(after, 0.25 * before);   // relaxation packs them
+  EXPECT_GT(before, 0.1);           // random positions: a wide spread
+  EXPECT_LT(after, 0.25 * before);  // relaxation packs them
   EXPECT_LT(after, 0.03);
   EXPECT_GT(m["relax_steps"].get<long>(), 0);
 }
 
 TEST(NodeDensity, DensityPreservingCloserToInteriorThanMirrorNearCircle) {
-  const auto m = run_quiet(disk_case("{random_seed: 5, relax: {max_steps: 300, tolerance: 1.0e-4}}"));
+  const auto m =
+      run_quiet(disk_case("{random_seed: 5, relax: {max_steps: 300, tolerance: 1.0e-4}}"));
   const double mirror = m["ghost_node_density_dev_mirror"];
   const double dp = m["ghost_node_density_dev_density_preserving"];
   EXPECT_LT(dp, mirror);

@@ -123,8 +123,8 @@ class NodeDensityAnalysis final : public Analysis<D> {
             a.mx = std::max(a.mx, v);
             ++a.k;
             if (q % stride == 0)
-              points << fmt::format("{},{},{:.6g},{:.6g}\n", name, kind == 0 ? "fluid" : "ghost",
-                                    s, v);
+              points << fmt::format("{},{},{:.6g},{:.6g}\n", name, kind == 0 ? "fluid" : "ghost", s,
+                                    v);
           }
           for (const auto& [b, a] : bins) {
             const double mean = a.s / a.k;
@@ -154,9 +154,7 @@ std::unique_ptr<Analysis<D>> make_node_density_analysis(const YAML::Node& params
   return std::make_unique<NodeDensityAnalysis<D>>(params, c);
 }
 
-template std::unique_ptr<Analysis<2>> make_node_density_analysis<2>(const YAML::Node&,
-                                                                   const Case&);
-template std::unique_ptr<Analysis<3>> make_node_density_analysis<3>(const YAML::Node&,
-                                                                   const Case&);
+template std::unique_ptr<Analysis<2>> make_node_density_analysis<2>(const YAML::Node&, const Case&);
+template std::unique_ptr<Analysis<3>> make_node_density_analysis<3>(const YAML::Node&, const Case&);
 
 }  // namespace curvsph

@@ -50,7 +50,8 @@ std::unique_ptr<Analysis<D>> make_static_droplet_analysis(const YAML::Node& para
     throw InputError(c.file_name(), key + "." + params.begin()->first.as<std::string>(),
                      "unknown key (static_droplet takes no parameters)");
   if (c.surface_tension.empty())
-    throw InputError(c.file_name(), key, "needs a surface_tension pair (the drop is its second fluid)");
+    throw InputError(c.file_name(), key,
+                     "needs a surface_tension pair (the drop is its second fluid)");
   const auto& st = c.surface_tension.front();
   const RegionSpec& r = c.fluids.at(st.fluid_b).region;
   if (r.kind != RegionSpec::Kind::disk && r.kind != RegionSpec::Kind::ball)

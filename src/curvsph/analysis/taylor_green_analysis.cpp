@@ -10,7 +10,8 @@
 
 namespace curvsph {
 
-TaylorGreen taylor_green_from_case(const Case& c, const YAML::Node& params, const std::string& key) {
+TaylorGreen taylor_green_from_case(const Case& c, const YAML::Node& params,
+                                   const std::string& key) {
   const std::string file = c.file_name();
   if (c.dimension != 2) throw InputError(file, key, "the Taylor–Green vortex is 2-D");
   if (!c.has_domain || !c.periodic[0] || !c.periodic[1])

@@ -15,8 +15,9 @@ std::vector<Command>& command_registry() {
 
 int main(int argc, char** argv) {
   using namespace curvsph;
-  CLI::App cli{"curvsph — SPH with accurate walls of curved shape (ghosts, density-preserving map, "
-               "boundary integrals)"};
+  CLI::App cli{
+      "curvsph — SPH with accurate walls of curved shape (ghosts, density-preserving map, "
+      "boundary integrals)"};
   cli.require_subcommand(1);
   cli.set_version_flag("--version", "curvsph 0.1.0");
   auto& registry = app::command_registry();

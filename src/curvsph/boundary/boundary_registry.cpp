@@ -30,9 +30,9 @@ std::unique_ptr<BoundaryModel<D>> make_boundary_model(const BoundaryContext<D>& 
   if (method == "none") return nullptr;
   for (const auto& m : methods<D>())
     if (method == m.name) return m.make(ctx);
-  throw InputError(ctx.spec.file_name(), "boundary.method",
-                   "'" + method + "' walls are not available in " + std::to_string(D) +
-                       "-D in this build");
+  throw InputError(
+      ctx.spec.file_name(), "boundary.method",
+      "'" + method + "' walls are not available in " + std::to_string(D) + "-D in this build");
 }
 
 template std::unique_ptr<BoundaryModel<2>> make_boundary_model<2>(const BoundaryContext<2>&);

@@ -26,6 +26,8 @@ Real parallel_max(Index n, Real init, F&& f) {
   return m;
 }
 
-inline int thread_count() { return omp_get_max_threads(); }
+inline int thread_count() {
+  return omp_get_max_threads();
+}
 
 }  // namespace curvsph

@@ -14,9 +14,9 @@ namespace curvsph {
 template <int D>
 struct Particles {
   // Kinematics.
-  std::vector<Vec<D>> x;   // position
-  std::vector<Vec<D>> v;   // velocity
-  std::vector<Vec<D>> a;   // acceleration (rate of v)
+  std::vector<Vec<D>> x;  // position
+  std::vector<Vec<D>> v;  // velocity
+  std::vector<Vec<D>> a;  // acceleration (rate of v)
   // Thermodynamics.
   std::vector<Real> mass;
   std::vector<Real> rho;    // density
@@ -59,9 +59,8 @@ struct Particles {
   }
   template <class F>
   void for_each_field(F&& f) const {
-    const_cast<Particles*>(this)->for_each_field([&](const char* name, const auto& data) {
-      f(name, data);
-    });
+    const_cast<Particles*>(this)->for_each_field(
+        [&](const char* name, const auto& data) { f(name, data); });
   }
 
   // Reorder every field: new[k] = old[order[k]].

@@ -57,7 +57,9 @@ const std::vector<ShapeEntry>& shape_table() {
       {"nurbs_curve", single<2, &make_nurbs_curve_wall>, nullptr},
       {"nurbs_surface", nullptr, single<3, &make_nurbs_surface_wall>},
       {"cad", nullptr,
-       [](const WallSource& s) { return make_cad_walls(s.node, s.file, s.key, s.base_dir.string()); }},
+       [](const WallSource& s) {
+         return make_cad_walls(s.node, s.file, s.key, s.base_dir.string());
+       }},
   };
   return table;
 }

@@ -135,7 +135,9 @@ class Keys {
         return "nothing";
     }
   }
-  static std::string scalar_text(const YAML::Node& n) { return n.IsScalar() ? n.Scalar() : kind(n); }
+  static std::string scalar_text(const YAML::Node& n) {
+    return n.IsScalar() ? n.Scalar() : kind(n);
+  }
   double as_number(const YAML::Node& n, const std::string& k) const {
     double v = 0;
     if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
@@ -151,8 +153,9 @@ class Keys {
 RegionSpec read_region(const Keys& k, int dim) {
   const bool has_random = k.node() && k.node().IsMap() && k.node()["random"];
   if (!k.node() || !k.node().IsMap() || k.node().size() != (has_random ? 2u : 1u))
-    k.fail(k.path(), "must hold exactly one region: box | disk | ball | annulus | inside_walls "
-                     "(and optionally random: true)");
+    k.fail(k.path(),
+           "must hold exactly one region: box | disk | ball | annulus | inside_walls "
+           "(and optionally random: true)");
   std::string type;
   for (const auto& kv : k.node())
     if (kv.first.as<std::string>() != "random") type = kv.first.as<std::string>();
@@ -169,8 +172,8 @@ RegionSpec read_region(const Keys& k, int dim) {
       if (!(r.max[d] > r.min[d])) s.fail(s.key("max"), "must exceed min on every axis");
   } else if (type == "disk" || type == "ball") {
     if ((type == "disk") != (dim == 2))
-      k.fail(k.key(type), type == "disk" ? "a disk is 2-D; use ball in 3-D"
-                                         : "a ball is 3-D; use disk in 2-D");
+      k.fail(k.key(type),
+             type == "disk" ? "a disk is 2-D; use ball in 3-D" : "a ball is 3-D; use disk in 2-D");
     s.allow({"center", "radius"});
     r.kind = type == "disk" ? RegionSpec::Kind::disk : RegionSpec::Kind::ball;
     r.center = s.vector("center", dim);
@@ -329,10 +332,10 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   }
 
   const Keys bnd = top.sub("boundary");
-  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force",
-              "pressure"});
+  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure"});
   c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
-  c.boundary.map = bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
+  c.boundary.map =
+      bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
   c.boundary.velocity = bnd.choice("velocity", {"no_slip", "free_slip"}, "no_slip");
   c.boundary.shepard =
       bnd.choice("shepard", {"geometric", "volume", "monolithic", "none"}, "geometric");

@@ -51,7 +51,8 @@ struct BoundarySpec {
   std::string shepard = "geometric";
   bool wall_particles = false;
   bool wall_force = false;
-  std::string pressure = "symmetric";  // integrals: symmetric | consistent near-wall grad p  // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
+  std::string pressure = "symmetric";  // integrals: symmetric | consistent near-wall grad p  //
+                                       // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
 };
 
 // setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation
@@ -100,10 +101,10 @@ struct Case {
   RelaxSpec relax;
   double t_end = 0;
   double cfl = 0.2;
-  double dt_max = 0;  // 0: no cap
-  long max_steps = 0;  // 0: unlimited
-  double output_every = 0;   // 0: only first and last
-  double probe_every = 0;    // 0: as output_every
+  double dt_max = 0;        // 0: no cap
+  long max_steps = 0;       // 0: unlimited
+  double output_every = 0;  // 0: only first and last
+  double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
   std::vector<ProbeSpec> probes;
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.

@@ -55,9 +55,9 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
       if (!parse_index(part, index))
         throw InputError("--set", walked, "is a list; address its elements by index");
       if (index > node.size())
-        throw InputError("--set", walked,
-                         "index out of range (the list has " + std::to_string(node.size()) +
-                             " elements)");
+        throw InputError(
+            "--set", walked,
+            "index out of range (the list has " + std::to_string(node.size()) + " elements)");
       if (index == node.size()) node.push_back(YAML::Node(YAML::NodeType::Map));
       child.reset(node[index]);
     } else {

@@ -24,8 +24,7 @@ class ProbeWriter {
   // Values in column order.
   std::vector<double> sample(const Particles<D>& P, const CellList<D>& cells,
                              const WendlandC2<D>& W) const;
-  void write_row(double t, const Particles<D>& P, const CellList<D>& cells,
-                 const WendlandC2<D>& W);
+  void write_row(double t, const Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W);
 
  private:
   std::vector<ProbeSpec> probes_;

@@ -38,7 +38,8 @@ class CellList {
     for (int d = 0; d < D; ++d) {
       if (!periodic_[d]) continue;
       const Real rel = x[d] - lo_[d];
-      if (rel < 0 || rel >= length_[d]) x[d] = lo_[d] + rel - length_[d] * std::floor(rel / length_[d]);
+      if (rel < 0 || rel >= length_[d])
+        x[d] = lo_[d] + rel - length_[d] * std::floor(rel / length_[d]);
       if (x[d] >= lo_[d] + length_[d]) x[d] = lo_[d];  // round-off at the upper edge
     }
   }

@@ -4,8 +4,8 @@
 //   drho_i/dt = rho_i sum_j V_j (u_i - u_j).grad_i W_ij
 //             + delta h c0 sum_j V_j psi_ij.grad_i W_ij,
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
-// where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j - x_i)]^-1,
-// exact for linear fields).
+// where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j -
+// x_i)]^-1, exact for linear fields).
 #include <Eigen/LU>
 #include <vector>
 
@@ -20,9 +20,8 @@ template <int D>
 void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W) {
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     Real s = 0;
-    cells.for_each_neighbor(P.x[i], P.x, [&](Index, const Vec<D>&, Real r2) {
-      s += W.value(std::sqrt(r2));
-    });
+    cells.for_each_neighbor(P.x[i], P.x,
+                            [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
     P.sigma[i] = s;
     P.rho[i] = P.mass[i] * s;
   });

@@ -18,8 +18,8 @@
 namespace curvsph {
 
 struct SurfaceTensionPair {
-  int a = 0, b = 1;        // fluid indices
-  Real coefficient = 0;    // N/m
+  int a = 0, b = 1;      // fluid indices
+  Real coefficient = 0;  // N/m
 };
 
 template <int D>

@@ -78,7 +78,8 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
   std::vector<GeneratedPoint> pts;
   switch (r.kind) {
     case RegionSpec::Kind::box:
-      lattice(r.min, r.max, dim, dx, [](const Vec3d&) { return true; }, pts);
+      lattice(
+          r.min, r.max, dim, dx, [](const Vec3d&) { return true; }, pts);
       break;
     case RegionSpec::Kind::disk:
     case RegionSpec::Kind::ball: {
@@ -87,13 +88,14 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
         lo[d] -= r.radius;
         hi[d] += r.radius;
       }
-      lattice(lo, hi, dim, dx,
-              [&](const Vec3d& x) {
-                double d2 = 0;  // over the first dim axes only (z is 0 in 2-D)
-                for (int d = 0; d < dim; ++d) d2 += (x[d] - r.center[d]) * (x[d] - r.center[d]);
-                return d2 < r.radius * r.radius;
-              },
-              pts);
+      lattice(
+          lo, hi, dim, dx,
+          [&](const Vec3d& x) {
+            double d2 = 0;  // over the first dim axes only (z is 0 in 2-D)
+            for (int d = 0; d < dim; ++d) d2 += (x[d] - r.center[d]) * (x[d] - r.center[d]);
+            return d2 < r.radius * r.radius;
+          },
+          pts);
       break;
     }
     case RegionSpec::Kind::annulus: {

@@ -28,9 +28,8 @@ void node_density(const std::vector<Vec<D>>& at, const std::vector<Vec<D>>& xf,
   n.resize(at.size());
   parallel_for(static_cast<Index>(at.size()), [&](Index i) {
     Real s = 0;
-    cf.for_each_neighbor(at[i], xf, [&](Index, const Vec<D>&, Real r2) {
-      s += W.value(std::sqrt(r2));
-    });
+    cf.for_each_neighbor(at[i], xf,
+                         [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
     if (G && cg && G->size() > 0)
       cg->for_each_neighbor(at[i], G->x, [&](Index g, const Vec<D>&, Real r2) {
         s += G->beta[g] * W.value(std::sqrt(r2));
@@ -110,8 +109,7 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
       // Keep the particle on the fluid side of every wall, at least `clearance` away.
       for (std::size_t k = 0; k < walls.size(); ++k) {
         const WallPoint<D> p = walls[k].closest(x[i].template cast<double>());
-        if (p.distance < clearance)
-          x[i] = (p.foot + clearance * p.normal).template cast<Real>();
+        if (p.distance < clearance) x[i] = (p.foot + clearance * p.normal).template cast<Real>();
       }
       cells.wrap(x[i]);
     });

@@ -23,10 +23,10 @@ void Progress::update(long step, double t, double dt, bool force) {
   const double rate = elapsed > 0 ? static_cast<double>(step) * particles_ / elapsed : 0;
   const double frac = t_end_ > 0 ? t / t_end_ : 1;
   const double eta = frac > 0 ? elapsed * (1 - frac) / frac : 0;
-  const std::string line =
-      fmt::format("step {:>8}  t = {:.5g} / {:.5g} ({:5.1f}%)  dt = {:.3e}  {:.3e} particle-steps/s  "
-                  "ETA {:.0f} s",
-                  step, t, t_end_, 100 * frac, dt, rate, eta);
+  const std::string line = fmt::format(
+      "step {:>8}  t = {:.5g} / {:.5g} ({:5.1f}%)  dt = {:.3e}  {:.3e} particle-steps/s  "
+      "ETA {:.0f} s",
+      step, t, t_end_, 100 * frac, dt, rate, eta);
   if (tty_)
     fmt::print(stderr, "\r{}\033[K", line);
   else

@@ -90,8 +90,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         io::VtkPolyData poly;
         poly.set_points(bx);
         poly.add_scalar("kind", std::vector<std::int32_t>(kind.begin(), kind.end()));
-        const std::string bfile = name.empty() ? fmt::format("boundary_{:06d}.vtp", index)
-                                               : "boundary_" + name;
+        const std::string bfile =
+            name.empty() ? fmt::format("boundary_{:06d}.vtp", index) : "boundary_" + name;
         poly.write(o.out_dir / bfile);
         series.add(solver.time(), bfile, 1);
       }

@@ -10,8 +10,8 @@ namespace curvsph {
 
 struct RunOptions {
   std::filesystem::path out_dir = "out";
-  int threads = 0;        // 0: OpenMP default
-  bool progress = true;   // progress line on stderr
+  int threads = 0;          // 0: OpenMP default
+  bool progress = true;     // progress line on stderr
   bool write_files = true;  // false: no VTK/probes/log (validation sweeps); metrics still returned
 };
 

@@ -5,15 +5,15 @@
 #include <chrono>
 #include <cmath>
 
-#include "curvsph/core/error.hpp"
+#include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/ghost/ghost_map.hpp"
+#include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/generate.hpp"
-#include "curvsph/analysis/analysis.hpp"
 
 namespace curvsph {
 namespace {
@@ -66,8 +66,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
     relax_ = relax_particles<D>(P_.x, walls_, cells_, W_, ro);
   }
 
-  if (!c.initial_field.empty())
-    apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+  if (!c.initial_field.empty()) apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
   boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
   if (boundary_) boundary_->check_setup(P_, c.file_name());
 }
@@ -127,10 +126,10 @@ void Solver<D>::compute_rates(Real dt_rho) {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_);
     for (const auto& st : case_.surface_tension)
-      add_surface_tension(P_, cells_, W_,
-                          SurfaceTensionPair{st.fluid_a, st.fluid_b,
-                                             static_cast<Real>(st.coefficient)},
-                          surface_scratch_);
+      add_surface_tension(
+          P_, cells_, W_,
+          SurfaceTensionPair{st.fluid_a, st.fluid_b, static_cast<Real>(st.coefficient)},
+          surface_scratch_);
   }
   if (boundary_) {
     Stopwatch sw{times_.boundary};
@@ -156,7 +155,7 @@ Real Solver<D>::stable_dt() const {
   const Real amax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.a[i].squaredNorm(); }));
   const Real h = W_.h;
   const Real cfl = static_cast<Real>(case_.cfl);
-  Real dt = cfl * h / (F_.eos.c0 + vmax);                       // acoustic CFL
+  Real dt = cfl * h / (F_.eos.c0 + vmax);                             // acoustic CFL
   if (nu_max_ > 0) dt = std::min(dt, Real(0.125) * h * h / nu_max_);  // viscous (Morris 1997)
   if (amax > 0) dt = std::min(dt, Real(0.25) * std::sqrt(h / amax));  // force (Monaghan 1992)
   if (case_.dt_max > 0) dt = std::min(dt, static_cast<Real>(case_.dt_max));

@@ -43,8 +43,9 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   // developed by then) for Fig. 9; 2 seeds and 5 v0 values for Fig. 10 (paper: 20 x 15).
   const std::string t_end9 = ctx.quick ? "0.5" : "2";
   const std::string dx9 = ctx.quick ? "0.02" : "0.00934579439252336";
-  std::string table9 = "| map | particles | steps | t_max | penetrations | mean v_x | wall s |\n"
-                       "|---|---|---|---|---|---|---|\n";
+  std::string table9 =
+      "| map | particles | steps | t_max | penetrations | mean v_x | wall s |\n"
+      "|---|---|---|---|---|---|---|\n";
   for (const auto& map : maps) {
     const Case c = read_case(path, {"boundary.map=" + map, "time.end=" + t_end9,
                                     "resolution.dx=" + dx9, "forcing.drive.v0=0.5"});
@@ -78,10 +79,10 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     LowRun& run = runs[k];
     try {
-      const Case c = read_case(
-          path, {"boundary.map=" + run.map, fmt::format("forcing.drive.v0={}", run.v0),
-                 fmt::format("setup.random_seed={}", run.seed), fmt::format("resolution.dx={}", low_dx),
-                 "time.end=" + t_end10});
+      const Case c =
+          read_case(path, {"boundary.map=" + run.map, fmt::format("forcing.drive.v0={}", run.v0),
+                           fmt::format("setup.random_seed={}", run.seed),
+                           fmt::format("resolution.dx={}", low_dx), "time.end=" + t_end10});
       RunOptions o;
       o.threads = 1;
       o.progress = false;
@@ -114,7 +115,8 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   csv.close();
   std::ofstream mcsv(ctx.out_dir / "tmax_mean.csv");
   mcsv << "map,v0,tmax_mean,runs\n";
-  std::string table10 = "| v0 | mean t_max mirror | mean t_max density_preserving |\n|---|---|---|\n";
+  std::string table10 =
+      "| v0 | mean t_max mirror | mean t_max density_preserving |\n|---|---|---|\n";
   std::map<std::string, double> lowest;
   for (double v0 : v0s) {
     std::string row = fmt::format("| {:.2f} |", v0);
@@ -142,8 +144,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
                                       particles_low, seeds, v0s.size(), t_end10);
   r.summary.push_back({"cylinder_lattice.tmax_mean_min_mirror", tm, "(reference)", ref, true});
   r.summary.push_back({"cylinder_lattice.tmax_mean_min_density_preserving", td,
-                       fmt::format(">= 9.5 and > mirror ({:.3f})", tm), ref,
-                       td >= 9.5 && td > tm});
+                       fmt::format(">= 9.5 and > mirror ({:.3f})", tm), ref, td >= 9.5 && td > tm});
   run_plot_script(ctx, "plot_cylinder_lattice.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Flow through a lattice of cylinders (Vela Vela et al. §8, Figs. 9-10)\n\n"

@@ -46,8 +46,8 @@ StudyResult run_node_density_study(const StudyContext& ctx) {
     const long rs = m["relax_steps"];
     const double spread = m["relax_node_density_spread"];
     const double rsec = m["relax_seconds"];
-    csv << fmt::format("{},{},{},{:.6g},{:.3f},{:.6g},{:.6g},{:.6g}\n", shape, np, rs, spread,
-                       rsec, mir, dp, m["node_density_interior_spread"].get<double>());
+    csv << fmt::format("{},{},{},{:.6g},{:.3f},{:.6g},{:.6g},{:.6g}\n", shape, np, rs, spread, rsec,
+                       mir, dp, m["node_density_interior_spread"].get<double>());
     table += fmt::format("| {} | {} | {} | {:.4f} | {:.1f} | {:.4f} | {:.4f} | {:.2f} |\n", shape,
                          np, rs, spread, rsec, mir, dp, dp / mir);
     r.metrics["ghost_node_density_dev_mirror_" + shape] = mir;

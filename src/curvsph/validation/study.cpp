@@ -33,8 +33,8 @@ void run_plot_script(const StudyContext& ctx, const std::string& script,
 std::string summary_markdown(const std::vector<SummaryRow>& rows) {
   std::string s = "| figure | measured | target | reference | |\n|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    s += fmt::format("| `{}` | {:.4g} | {} | {} | {} |\n", r.figure, r.value, r.target,
-                     r.reference, r.pass ? "pass" : "**miss**");
+    s += fmt::format("| `{}` | {:.4g} | {} | {} | {} |\n", r.figure, r.value, r.target, r.reference,
+                     r.pass ? "pass" : "**miss**");
   return s;
 }
 

@@ -22,12 +22,13 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
   csv << "dx,particles,steps,l2_velocity_error,decay_rate_rel_error,wall_seconds\n";
   StudyResult r;
   std::vector<double> l2s;
-  std::string table = "| dx | particles | steps | l2_velocity_error | decay_rate_rel_error |\n"
-                      "|---|---|---|---|---|\n";
+  std::string table =
+      "| dx | particles | steps | l2_velocity_error | decay_rate_rel_error |\n"
+      "|---|---|---|---|---|\n";
   for (double dx : dxs) {
     const std::string tag = fmt::format("dx_{}", dx);
-    Case c = read_case(case_path, {fmt::format("resolution.dx={}", dx), "time.end=" + t_end,
-                                   "output.vtk=false"});
+    Case c = read_case(
+        case_path, {fmt::format("resolution.dx={}", dx), "time.end=" + t_end, "output.vtk=false"});
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
     o.threads = ctx.threads;
@@ -63,8 +64,9 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
      << "Case `cases/taylor_green_2d.yaml` (periodic unit square, U = 1, nu = 0.01, continuity "
         "density with delta-SPH, particle shifting), run to t = "
      << t_end << " at each dx. Regenerate with `build/curvsph validate taylor_green`.\n\n"
-     << table << "\nObserved order of the velocity error (two finest): "
-     << fmt::format("{:.2f}", order) << "\n\n"
+     << table
+     << "\nObserved order of the velocity error (two finest): " << fmt::format("{:.2f}", order)
+     << "\n\n"
      << summary_markdown(r.summary)
      << "\n![error vs dx](error_vs_dx.png)\n\n![kinetic energy](kinetic_energy.png)\n";
   return r;

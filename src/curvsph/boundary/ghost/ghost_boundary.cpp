@@ -13,7 +13,8 @@ class GhostBoundary final : public BoundaryModel<D> {
       : walls_(ctx.walls), W_(ctx.kernel), F_(ctx.fluid), fluid_cells_(ctx.cells) {
     const Case& c = ctx.spec;
     options_.map = parse_ghost_map(c.boundary.map, c.file_name(), "boundary.map");
-    options_.velocity = parse_ghost_velocity(c.boundary.velocity, c.file_name(), "boundary.velocity");
+    options_.velocity =
+        parse_ghost_velocity(c.boundary.velocity, c.file_name(), "boundary.velocity");
     options_.support = W_.support;
     options_.cells = &fluid_cells_;
     Vec3d lo = c.domain_min, hi = c.domain_max;

@@ -121,10 +121,9 @@ inline GhostDepth ghost_density_preserving(double d, double k1, double k2) {
     if (std::abs(u) <= 0.1) {
       double z =
           target *
-          (1.0 +
-           u * (-1.0 +
-                u * (5.0 / 3.0 +
-                     u * (-10.0 / 3.0 + u * (22.0 / 3.0 + u * (-154.0 / 9.0 + u * (374.0 / 9.0)))))));
+          (1.0 + u * (-1.0 + u * (5.0 / 3.0 +
+                                  u * (-10.0 / 3.0 + u * (22.0 / 3.0 + u * (-154.0 / 9.0 +
+                                                                            u * (374.0 / 9.0)))))));
       const double j1 = 1.0 + k1 * z;  // J = j1^2, J' = 2 k j1
       const double f = z * (1.0 + k1 * z * (1.0 + k1 * z * (1.0 / 3.0))) - target;
       z -= f * j1 / (j1 * j1 * j1 - f * k1);  // Halley: 2 f J / (2 J^2 - f J')

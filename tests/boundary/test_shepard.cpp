@@ -6,6 +6,7 @@
 
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
+#include "curvsph/core/quadrature.hpp"
 #include "curvsph/kernels/wendland.hpp"
 
 using namespace curvsph;
@@ -21,19 +22,8 @@ constexpr double dx = 0.5;  // h/dx = 2
 // predicate (sampling + bisection), the radial integral by 8-point Gauss-Legendre per
 // interval (exact: W r is a polynomial of degree 6), the angle by adaptive Simpson.
 double radial_mass(double r1, double r2) {
-  static const double xg[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                               0.7966664774136267,  0.9602898564975363};
-  static const double wg[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                               0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                               0.2223810344533745, 0.1012285362903763};
   const WendlandC2<2> W(h);
-  double s = 0;
-  for (int i = 0; i < 8; ++i) {
-    const double r = 0.5 * (r1 + r2) + 0.5 * (r2 - r1) * xg[i];
-    s += wg[i] * W.value(r) * r;
-  }
-  return 0.5 * (r2 - r1) * s;
+  return gauss_legendre_8([&](double r) { return W.value(r) * r; }, r1, r2);
 }
 
 double ray_integral(const Vec2d& x, double phi, const std::function<bool(const Vec2d&)>& inside) {

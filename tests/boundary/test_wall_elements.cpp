@@ -10,6 +10,7 @@
 
 #include "curvsph/boundary/integrals/shepard.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
+#include "curvsph/core/quadrature.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
 #include "curvsph/geometry/cylinder.hpp"
@@ -51,12 +52,8 @@ WallSet<D> single(WallPtr<D> w) {
 // 1/2 - r/(4R) in 3-D), integrated over r with 8-point Gauss-Legendre on 16 pieces.
 template <int D>
 double on_wall_reference(double h, double R, bool inside) {
-  static const double xg[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                               0.7966664774136267,  0.9602898564975363};
-  static const double wg[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                               0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                               0.2223810344533745, 0.1012285362903763};
+  const auto& xg = kGaussLegendre8Nodes;
+  const auto& wg = kGaussLegendre8Weights;
   const WendlandC2<D> W(h);
   double sum = 0;
   const int pieces = 16;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "curvsph/core/quadrature.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
 #include "curvsph/geometry/cylinder.hpp"
@@ -331,25 +332,12 @@ const std::vector<Discretizer<3>>& discretizers<3>() {
 }  // namespace
 
 double ellipse_arc_length(double a, double b, double u0, double u1) {
-  static const double xg[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                               0.7966664774136267,  0.9602898564975363};
-  static const double wg[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                               0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                               0.2223810344533745, 0.1012285362903763};
   const double sign = u1 >= u0 ? 1.0 : -1.0;
   if (u1 < u0) std::swap(u0, u1);
   const int pieces = std::max(1, static_cast<int>(std::ceil((u1 - u0) * 16.0)));
-  const double w = (u1 - u0) / pieces;
-  double sum = 0;
-  for (int p = 0; p < pieces; ++p) {
-    const double m = u0 + (p + 0.5) * w;
-    for (int i = 0; i < 8; ++i) {
-      const double u = m + 0.5 * w * xg[i];
-      sum += wg[i] * std::hypot(a * std::sin(u), b * std::cos(u));
-    }
-  }
-  return sign * 0.5 * w * sum;
+  return sign *
+         gauss_legendre_8([&](double u) { return std::hypot(a * std::sin(u), b * std::cos(u)); },
+                          u0, u1, pieces);
 }
 
 template <int D>

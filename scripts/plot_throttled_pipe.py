@@ -24,7 +24,9 @@ def last_snapshot(run_dir):
     pvd = os.path.join(run_dir, "series.pvd")
     files = []
     if os.path.exists(pvd):
-        files = re.findall(r'file="([^"]+)"', open(pvd).read())
+        # Part 0 holds the particles (part 1: ghosts / wall elements).
+        files = [f for f in re.findall(r'file="([^"]+)"', open(pvd).read())
+                 if os.path.basename(f).startswith("particles_")]
     if not files:
         files = sorted(f for f in os.listdir(run_dir) if re.match(r"particles_\d+\.vtp$", f))
     if not files:

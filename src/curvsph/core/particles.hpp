@@ -71,7 +71,10 @@ struct Particles {
  private:
   template <class T>
   static void apply(std::vector<T>& data, const std::vector<std::size_t>& order) {
-    std::vector<T> tmp(order.size());
+    // One scratch buffer per element type, swapped with the field: after the first re-sort
+    // the buffers have the right size and a re-sort allocates nothing.
+    static thread_local std::vector<T> tmp;
+    tmp.resize(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) tmp[k] = data[order[k]];
     data.swap(tmp);
   }

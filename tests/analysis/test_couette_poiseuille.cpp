@@ -13,8 +13,8 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/io/case_overrides.hpp"
-#include "curvsph/solver/solver.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph/solver/solver.hpp"
 
 namespace curvsph {
 namespace {

@@ -130,8 +130,7 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
       for (const auto& kv : params) {
         const auto k = kv.first.as<std::string>();
         if (k == "reference_flux") {
-          if (!YAML::convert<double>::decode(kv.second, reference_flux_) ||
-              !(reference_flux_ > 0))
+          if (!YAML::convert<double>::decode(kv.second, reference_flux_) || !(reference_flux_ > 0))
             throw InputError(file, key + ".reference_flux", "must be a number > 0 (m^2/s)");
           continue;
         }
@@ -140,8 +139,9 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
                       : k == "midline_points" ? &midline_points_
                                               : nullptr;
         if (!target)
-          throw InputError(file, key + "." + k,
-                           "unknown key (allowed here: sections, points, midline_points, reference_flux)");
+          throw InputError(
+              file, key + "." + k,
+              "unknown key (allowed here: sections, points, midline_points, reference_flux)");
         if (!YAML::convert<int>::decode(kv.second, *target))
           throw InputError(file, key + "." + k, "must be an integer");
       }

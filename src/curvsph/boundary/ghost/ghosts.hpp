@@ -36,8 +36,9 @@
 //  - forces: the ghost enters the pressure and viscous sums like a fluid neighbour j with
 //    those fields, its term weighted by beta[g] (it stands for beta[g] source volumes, as in
 //    the density sum; beta = 1 for mirror and density_preserving). Barker's eq. 22
-//    (sigma_g = sigma_s beta, unweighted) is not used: see ghost_boundary.cpp. Ghosts are not integrated in time; rebuild them after every position
-//    update (allocation-free after the first build: every vector is reused).
+//    (sigma_g = sigma_s beta, unweighted) is not used: see ghost_boundary.cpp. Ghosts are not
+//    integrated in time; rebuild them after every position update (allocation-free after the first
+//    build: every vector is reused).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -69,6 +69,8 @@ void check_curve(const NurbsCurve<D>& c, unsigned seed, int n_points) {
       for (int d = 0; d < D; ++d) x[d] += 0.1 * c.size() * U(rng);
     }
     const double ref = brute_curve(pr, c, pts, ts, x);
+    // The box bound used to skip far walls never exceeds the true distance.
+    EXPECT_LE(pr.lower_bound(x, 1e300), ref + 1e-12 * c.size());
     // Seeded as a boundary particle would (nearest sample), and with a random bad seed.
     const double seed_t = k % 2 ? c.t0() + (c.t1() - c.t0()) * S(rng) : ts[k % ts.size()];
     const Projection a = pr.project(x, nullptr, 1e-12 * c.size());
@@ -137,6 +139,7 @@ TEST(NurbsProjection, RandomSurfaceMatchesBruteForce) {
     int it = 0;
     pr.newton(x, u, v, lo_p, hi_p, 1e-14 * s.size(), it);
     const double ref = std::min(std::sqrt(bd), (s.point(u, v) - x).norm());
+    EXPECT_LE(pr.lower_bound(x, 1e300), ref + 1e-12 * s.size());
     const double seed[2] = {uv[(bi + 37 * k) % uv.size()][0], uv[(bi + 37 * k) % uv.size()][1]};
     const Projection r = pr.project(x, k % 3 ? seed : nullptr, 1e-12 * s.size());
     const double excess = r.distance - ref;

@@ -129,13 +129,19 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
     if (params && params.IsMap()) {
       for (const auto& kv : params) {
         const auto k = kv.first.as<std::string>();
+        if (k == "reference_flux") {
+          if (!YAML::convert<double>::decode(kv.second, reference_flux_) || !(reference_flux_ > 0))
+            throw InputError(file, key + ".reference_flux", "must be a number > 0 (m^2/s)");
+          continue;
+        }
         int* target = k == "sections"         ? &sections_
                       : k == "points"         ? &points_
                       : k == "midline_points" ? &midline_points_
                                               : nullptr;
         if (!target)
-          throw InputError(file, key + "." + k,
-                           "unknown key (allowed here: sections, points, midline_points)");
+          throw InputError(
+              file, key + "." + k,
+              "unknown key (allowed here: sections, points, midline_points, reference_flux)");
         if (!YAML::convert<int>::decode(kv.second, *target))
           throw InputError(file, key + "." + k, "must be an integer");
       }
@@ -222,6 +228,11 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
     m["flux_mean"] = flux_mean_;
     m["flux_variation"] = flux_variation_;
     m["reynolds"] = rho0_ * flux_mean_ / mu_;
+    if (reference_flux_ > 0) {
+      m["reference_flux"] = reference_flux_;
+      m["reference_reynolds"] = rho0_ * reference_flux_ / mu_;
+      m["flux_rel_error"] = flux_mean_ / reference_flux_ - 1.0;
+    }
     m["midline_vy_max_rel"] = vx_max > 0 ? vy_max / vx_max : 0.0;
     m["centerline_vx_rel_error"] = relative_l2(vx_p, ref_p);
     m["centerline_vx_max_rel_error"] = ref_max > 0 ? err_max / ref_max : 0.0;
@@ -277,6 +288,7 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
   ChannelGap throat_gap_;
   std::unique_ptr<VelocitySampler> sampler_;
   double flux_mean_ = 0, flux_variation_ = 0;
+  double reference_flux_ = 0;  // an independent steady flux for this force (0: none)
   std::vector<std::array<double, 3>> history_;
 };
 

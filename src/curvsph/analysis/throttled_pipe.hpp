@@ -17,7 +17,10 @@
 //    periodic seam (the wide end; Barker's x = 0); centerline_vx_max_rel_error its maximum
 //    over max v_x;
 //  - throat_vx_rel_error: the same comparison across the mid-length section (Fig. 9b);
-//  - throat_half_width: R at mid-length, from the walls.
+//  - throat_half_width: R at mid-length, from the walls;
+//  - with `reference_flux: Q_ref` (an independent steady flux of the same channel and
+//    force, e.g. scripts/throttled_pipe_reference.py): reference_flux, reference_reynolds
+//    and flux_rel_error = flux_mean / Q_ref - 1.
 // CSV files (when the run writes files): throttled_pipe_flux.csv (x, R, y_c, Q),
 // throttled_pipe_midline_x.csv (x, v_x, v_y, eq. 48, lubrication 3Q/(4R)),
 // throttled_pipe_midline_y.csv (the mid-length section), throttled_pipe_history.csv

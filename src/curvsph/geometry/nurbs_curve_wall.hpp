@@ -7,6 +7,7 @@
 // the true Euclidean distance |x - foot| signed by the side of that normal.
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -25,6 +26,9 @@ class NurbsCurveWall : public Wall<2> {
   WallPoint<2> closest(const Vec2d& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override { return min_radius_; }
+  double distance_lower_bound(const Vec2d& x) const override {
+    return proj_->lower_bound(x, std::numeric_limits<double>::infinity());
+  }
 
   // Boundary particles at arc-length spacing about dx, with their parameters (the seeds).
   nurbs::CurveSamples<2> boundary_particles(double dx) const {

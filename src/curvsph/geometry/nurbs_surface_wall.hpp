@@ -4,6 +4,7 @@
 // surface normal there and the distance is |x - foot| signed by the side of that normal.
 #include <yaml-cpp/yaml.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -21,6 +22,9 @@ class NurbsSurfaceWall : public Wall<3> {
   WallPoint<3> closest(const Vec3d& x, const ParamSeed& seed = {}) const override;
   std::string describe() const override;
   double min_radius_of_curvature() const override { return min_radius_; }
+  double distance_lower_bound(const Vec3d& x) const override {
+    return proj_->lower_bound(x, std::numeric_limits<double>::infinity());
+  }
 
   // Wall data at given parameters (also used by trimmed CAD faces).
   WallPoint<3> at(double u, double v, const Vec3d& x) const;

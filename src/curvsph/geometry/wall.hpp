@@ -72,6 +72,10 @@ class Wall {
   // Smallest radius of curvature anywhere on the wall (+inf for flat walls); used to refuse
   // a kernel support too large for the wall (DESIGN.md §3 errors).
   virtual double min_radius_of_curvature() const = 0;
+  // A cheap lower bound on the unsigned distance |x - closest(x).foot| (0: no bound known).
+  // Lets callers that only care about points within some reach (ghosts within 2h) skip the
+  // full closest-point query of iterative shapes far from the wall.
+  virtual double distance_lower_bound(const VecD<D>& /*x*/) const { return 0.0; }
 
   WallMotion<D> motion;
 };

@@ -43,6 +43,15 @@ CurveProjector<D>::CurveProjector(const NurbsCurve<D>& curve) : curve_(curve) {
     boxes.push_back(box);
   }
   bvh_.build(boxes, 1);
+  seg_boxes_ = std::move(boxes);
+}
+
+template <int D>
+double CurveProjector<D>::lower_bound(const VecD<D>& x, double reach) const {
+  double lb = reach;
+  bvh_.visit(
+      x, [&] { return lb; }, [&](int s) { lb = std::min(lb, seg_boxes_[s].distance(x)); });
+  return lb;
 }
 
 template <int D>

@@ -54,6 +54,10 @@ class CurveProjector {
                 int& iterations) const;
   double default_tolerance() const { return 1e-10 * curve_.size(); }
   int segment_count() const { return static_cast<int>(segs_.size()); }
+  // A lower bound on the distance from x to the curve: the smallest distance to the
+  // bounding box of a Bezier piece (each piece lies in the hull of its control points), or
+  // `reach` if no piece's box is nearer than reach. A few box tests, no allocation.
+  double lower_bound(const VecD<D>& x, double reach) const;
 
  private:
   using HPoint = typename NurbsCurve<D>::HPoint;
@@ -67,6 +71,7 @@ class CurveProjector {
   const NurbsCurve<D>& curve_;
   std::vector<HPoint> bez_;
   std::vector<Segment> segs_;
+  std::vector<Aabb<D>> seg_boxes_;
   Bvh<D> bvh_;
 };
 
@@ -79,6 +84,8 @@ class SurfaceProjector {
               double tol, int& iterations) const;
   double default_tolerance() const { return 1e-10 * surf_.size(); }
   int patch_count() const { return static_cast<int>(patches_.size()); }
+  // As CurveProjector::lower_bound, over the Bezier patches' boxes.
+  double lower_bound(const Vec3d& x, double reach) const;
 
  private:
   struct Patch {
@@ -91,6 +98,7 @@ class SurfaceProjector {
   const NurbsSurface& surf_;
   std::vector<Eigen::Vector4d> bez_;
   std::vector<Patch> patches_;
+  std::vector<Aabb<3>> patch_boxes_;
   Bvh<3> bvh_;
 };
 

@@ -60,6 +60,14 @@ SurfaceProjector::SurfaceProjector(const NurbsSurface& s) : surf_(s) {
       boxes.push_back(box);
     }
   bvh_.build(boxes, 1);
+  patch_boxes_ = std::move(boxes);
+}
+
+double SurfaceProjector::lower_bound(const Vec3d& x, double reach) const {
+  double lb = reach;
+  bvh_.visit(
+      x, [&] { return lb; }, [&](int s) { lb = std::min(lb, patch_boxes_[s].distance(x)); });
+  return lb;
 }
 
 void SurfaceProjector::newton(const Vec3d& x, double& u, double& v, const double lo[2],

@@ -121,6 +121,10 @@ struct Generator {
         }
         continue;
       }
+      // Iterative walls (NURBS) first rule out particles far from them with a box bound:
+      // no ghost is due beyond the support. Penetration is still caught: a particle moves
+      // far less than 2h per step, so it is seen at distance <= 0 the step it crosses.
+      if (walls[k].distance_lower_bound(x) >= support) continue;
       const WallPoint<D> p = walls[k].closest(x);
       if (!(p.distance > 0)) {
         penetrated = true;

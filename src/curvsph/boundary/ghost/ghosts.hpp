@@ -31,12 +31,14 @@
 //  - build a CellList<D> over `x` (same support and periodic axes as the fluid's) and, for
 //    each fluid particle i, visit the ghosts g within 2h of x_i;
 //  - density (summation, Barker eq. 20): sigma_i += beta[g] * W(|x_i - x_g|);
-//  - ghost fields copied from the source s = source[g]: sigma_g = sigma_s * beta[g]
-//    (Barker eq. 22; beta = 1 for mirror and density_preserving), p_g = p_s, rho_g = rho_s,
-//    mass_g = mass_s; velocity v[g] as above (already computed);
+//  - ghost fields copied from the source s = source[g]: sigma_g = sigma_s, p_g = p_s,
+//    rho_g = rho_s; velocity v[g] as above (already computed);
 //  - forces: the ghost enters the pressure and viscous sums like a fluid neighbour j with
-//    those fields. Ghosts are not integrated in time; rebuild them after every position
-//    update (allocation-free after the first build: every vector is reused).
+//    those fields, its term weighted by beta[g] (it stands for beta[g] source volumes, as in
+//    the density sum; beta = 1 for mirror and density_preserving). Barker's eq. 22
+//    (sigma_g = sigma_s beta, unweighted) is not used: see ghost_boundary.cpp. Ghosts are not
+//    integrated in time; rebuild them after every position update (allocation-free after the first
+//    build: every vector is reused).
 #include <cstdint>
 #include <string>
 #include <vector>

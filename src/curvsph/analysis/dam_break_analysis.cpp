@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -82,7 +83,8 @@ Series read_probes(const std::filesystem::path& path) {
     std::stringstream ls(line);
     std::string c;
     std::vector<double> v;
-    while (std::getline(ls, c, ',')) v.push_back(c == "nan" || c == "-nan" ? kNaN : std::stod(c));
+    // strtod: reads nan and denormals (std::stod throws on underflow).
+    while (std::getline(ls, c, ',')) v.push_back(std::strtod(c.c_str(), nullptr));
     if (v.size() != head.size()) continue;  // a row cut by an interrupted run
     s.t.push_back(v[0]);
     for (std::size_t k = 1; k < head.size(); ++k) s.col[head[k]].push_back(v[k]);
@@ -203,7 +205,8 @@ class DamBreakAnalysis final : public Analysis<3> {
 std::unique_ptr<Analysis<3>> make_dam_break_analysis(const YAML::Node& params, const Case& c) {
   const std::string file = c.file_name();
   const std::string key = "analysis.dam_break";
-  if (!params || !params.IsMap()) throw InputError(file, key, "must be a mapping ({experiment: PATH})");
+  if (!params || !params.IsMap())
+    throw InputError(file, key, "must be a mapping ({experiment: PATH})");
   for (const auto& kv : params)
     if (kv.first.as<std::string>() != "experiment")
       throw InputError(file, key + "." + kv.first.as<std::string>(),

@@ -32,7 +32,9 @@ Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const
   bool along = g[up] < 0;
   for (int d = 0; d < c.dimension; ++d)
     if (d != up && std::abs(g[d]) > 1e-12 * std::abs(g[up])) along = false;
-  if (!along) throw InputError(file, key, c.dimension == 3 ? "needs gravity along -z" : "needs gravity along -y");
+  if (!along)
+    throw InputError(file, key,
+                     c.dimension == 3 ? "needs gravity along -z" : "needs gravity along -y");
   hs.g = -g[up];
   hs.rho0 = c.fluids.at(0).rho0;
   return hs;

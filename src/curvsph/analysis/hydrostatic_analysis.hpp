@@ -2,7 +2,8 @@
 // A liquid at rest under gravity (Calderon et al. §3.1, the 2-D hydrostatic tank; the initial
 // state of the 3-D dam break, §3.2):
 //   p(y) = rho0 g (y_s - y),  y_s = bottom + depth (the free surface),
-// with g = |gravity| acting along -y (2-D) or -z (3-D, where y above reads z). Parameters (both for `analysis:` and `initial:`):
+// with g = |gravity| acting along -y (2-D) or -z (3-D, where y above reads z). Parameters (both for
+// `analysis:` and `initial:`):
 //   {depth: H, bottom: 0}   (bottom defaults to 0).
 #include "curvsph/analysis/analysis.hpp"
 

@@ -1,8 +1,8 @@
 #include "curvsph/boundary/integrals/shepard.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -392,7 +392,8 @@ double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double
       [&](const auto& fn) {
         for (std::size_t j = 0; j < el.size(); ++j) fn(j);
       },
-      false, [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
+      false,
+      [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
         return element_parts(el, near, y, ys, F, quad);
       });
 }
@@ -406,7 +407,8 @@ double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::siz
       [&](const auto& fn) {
         for (std::size_t j : candidates) fn(j);
       },
-      false, [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
+      false,
+      [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
         return element_parts(el, near, y, ys, F, quad);
       });
 }
@@ -442,8 +444,8 @@ GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
       const auto& v = el.vertices[j];
       const int m = el.vertex_count[j];
       for (int k = 0; k < m; ++k) {
-        const auto it =
-            edges.find(key(v[static_cast<std::size_t>((k + 1) % m)], v[static_cast<std::size_t>(k)]));
+        const auto it = edges.find(
+            key(v[static_cast<std::size_t>((k + 1) % m)], v[static_cast<std::size_t>(k)]));
         if (it == edges.end()) continue;
         for (std::int64_t o : it->second) {
           const auto so = static_cast<std::size_t>(o);

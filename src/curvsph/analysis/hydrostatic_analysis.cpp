@@ -14,7 +14,6 @@ namespace curvsph {
 
 Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const std::string& key) {
   const std::string file = c.file_name();
-  if (c.dimension != 2) throw InputError(file, key, "the hydrostatic reference is 2-D");
   Hydrostatic hs;
   if (!params || !params.IsMap()) throw InputError(file, key, "must be a mapping ({depth: 0.5})");
   for (const auto& kv : params) {
@@ -27,10 +26,16 @@ Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const
     throw InputError(file, key + ".depth", "must be a number > 0");
   if (params["bottom"] && !YAML::convert<double>::decode(params["bottom"], hs.bottom))
     throw InputError(file, key + ".bottom", "must be a number");
+  // Gravity along the last axis: -y in 2-D, -z in 3-D.
   const Vec3d g = c.gravity;
-  if (!(g[1] < 0) || std::abs(g[0]) > 1e-12 * std::abs(g[1]))
-    throw InputError(file, key, "needs gravity along -y");
-  hs.g = -g[1];
+  const int up = c.dimension == 3 ? 2 : 1;
+  bool along = g[up] < 0;
+  for (int d = 0; d < c.dimension; ++d)
+    if (d != up && std::abs(g[d]) > 1e-12 * std::abs(g[up])) along = false;
+  if (!along)
+    throw InputError(file, key,
+                     c.dimension == 3 ? "needs gravity along -z" : "needs gravity along -y");
+  hs.g = -g[up];
   hs.rho0 = c.fluids.at(0).rho0;
   return hs;
 }
@@ -98,6 +103,8 @@ class HydrostaticAnalysis final : public Analysis<2> {
 }  // namespace
 
 std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c) {
+  if (c.dimension != 2)
+    throw InputError(c.file_name(), "analysis.hydrostatic", "the hydrostatic analysis is 2-D");
   WallSet<2> walls;
   if (c.root["walls"] && c.root["walls"].IsSequence())
     walls = parse_walls<2>(c.root["walls"], c.file_name(), c.file.parent_path());
@@ -105,12 +112,14 @@ std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params,
       hydrostatic_from_case(c, params, "analysis.hydrostatic"), std::move(walls));
 }
 
+template <int D>
 void hydrostatic_initial(const Case& c, const YAML::Node& params, const Eos& eos,
-                         const std::vector<Real>& rho0, Particles<2>& P) {
+                         const std::vector<Real>& rho0, Particles<D>& P) {
   const Hydrostatic hs = hydrostatic_from_case(c, params, "initial.hydrostatic");
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const Real p = static_cast<Real>(std::max(0.0, hs.pressure(P.x[i][1])) + eos.p0);
-    // Mass follows the density (taylor_green_initial explains why).
+    const Real p = static_cast<Real>(std::max(0.0, hs.pressure(P.x[i][D - 1])) + eos.p0);
+    // Mass follows the density (taylor_green_initial explains why): sigma = rho/m keeps the
+    // lattice's number density, which the sigma-form pressure gradient needs at rest.
     const Real volume = P.mass[i] / rho0[P.phase[i]];
     P.rho[i] = eos.density(p, rho0[P.phase[i]]);
     P.mass[i] = P.rho[i] * volume;
@@ -118,5 +127,10 @@ void hydrostatic_initial(const Case& c, const YAML::Node& params, const Eos& eos
     P.v[i].setZero();
   }
 }
+
+template void hydrostatic_initial<2>(const Case&, const YAML::Node&, const Eos&,
+                                     const std::vector<Real>&, Particles<2>&);
+template void hydrostatic_initial<3>(const Case&, const YAML::Node&, const Eos&,
+                                     const std::vector<Real>&, Particles<3>&);
 
 }  // namespace curvsph

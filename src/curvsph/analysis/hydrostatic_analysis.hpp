@@ -1,7 +1,9 @@
 #pragma once
-// A liquid at rest under gravity (Calderon et al. §3.1, the 2-D hydrostatic tank):
+// A liquid at rest under gravity (Calderon et al. §3.1, the 2-D hydrostatic tank; the initial
+// state of the 3-D dam break, §3.2):
 //   p(y) = rho0 g (y_s - y),  y_s = bottom + depth (the free surface),
-// with g = |gravity| acting along -y. Parameters (both for `analysis:` and `initial:`):
+// with g = |gravity| acting along -y (2-D) or -z (3-D, where y above reads z). Parameters (both for
+// `analysis:` and `initial:`):
 //   {depth: H, bottom: 0}   (bottom defaults to 0).
 #include "curvsph/analysis/analysis.hpp"
 
@@ -22,10 +24,11 @@ Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const
 // time, reduced kinetic energy, reduced pressure error at every output time) and
 // hydrostatic_profile.csv (y, p, p_exact of every particle at the end).
 std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c);
-// p = rho0 g (y_s - y) (clamped at 0 above the surface), rho from the EOS, mass = rho * the
-// lattice volume (so sigma = rho/m keeps the lattice's number density; see
-// taylor_green_initial), velocity 0.
+// p = rho0 g (y_s - y) (clamped at 0 above the surface; y the last axis: y in 2-D, z in
+// 3-D with gravity along -z), rho from the EOS, mass = rho * the lattice volume (so
+// sigma = rho/m keeps the lattice's number density; see taylor_green_initial), velocity 0.
+template <int D>
 void hydrostatic_initial(const Case& c, const YAML::Node& params, const Eos& eos,
-                         const std::vector<Real>& rho0, Particles<2>& P);
+                         const std::vector<Real>& rho0, Particles<D>& P);
 
 }  // namespace curvsph

@@ -2,6 +2,7 @@
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/analysis/couette_analysis.hpp"
 #include "curvsph/analysis/cylinder_lattice.hpp"
+#include "curvsph/analysis/dam_break_analysis.hpp"
 #include "curvsph/analysis/hydrostatic_analysis.hpp"
 #include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/poiseuille_analysis.hpp"
@@ -29,11 +30,13 @@ const Entry<2> kEntries2[] = {
     {"node_density", &make_node_density_analysis<2>, nullptr},
     {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
     {"throttled_pipe", &make_throttled_pipe_analysis, &throttled_pipe_initial},
-    {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial},
+    {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial<2>},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},
     {"node_density", &make_node_density_analysis<3>, nullptr},
+    {"hydrostatic", nullptr, &hydrostatic_initial<3>},
+    {"dam_break", &make_dam_break_analysis, nullptr},
 };
 
 template <int D>

@@ -404,11 +404,12 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
       p.point = pk.vector("point", D);
       const YAML::Node fl = pk.raw("fields");
       if (!fl || !fl.IsSequence() || fl.size() == 0)
-        pk.fail(pk.key("fields"), "missing (a list of: p, rho, vel)");
+        pk.fail(pk.key("fields"), "missing (a list of: p, p_wall, rho, vel)");
       for (std::size_t k = 0; k < fl.size(); ++k) {
         const std::string f = fl[k].IsScalar() ? fl[k].as<std::string>() : "";
-        if (f != "p" && f != "rho" && f != "vel")
-          pk.fail(pk.key("fields") + "." + std::to_string(k), "must be one of: p, rho, vel");
+        if (f != "p" && f != "p_wall" && f != "rho" && f != "vel")
+          pk.fail(pk.key("fields") + "." + std::to_string(k),
+                  "must be one of: p, p_wall, rho, vel");
         p.fields.push_back(f);
       }
     }

@@ -69,7 +69,7 @@ struct ProbeSpec {
   enum class Kind { point, gauge } kind = Kind::point;
   Vec3d point = Vec3d::Zero();
   Vec3d direction = Vec3d::Zero();  // gauge
-  std::vector<std::string> fields;  // point: p, rho, vel
+  std::vector<std::string> fields;  // point: p, p_wall, rho, vel (io/probes.hpp)
 };
 
 struct SurfaceTensionSpec {

@@ -10,23 +10,25 @@ namespace {
 template <int D>
 struct Interpolated {
   Real fraction = 0;  // sum_j V_j W_j
-  Real p = 0, rho = 0;
+  Real p = 0, p_wall = 0, rho = 0;
   Vec<D> vel = Vec<D>::Zero();
 };
 
 template <int D>
 Interpolated<D> interpolate(const Vec<D>& x, const Particles<D>& P, const CellList<D>& cells,
-                            const WendlandC2<D>& W) {
+                            const WendlandC2<D>& W, const Vec<D>& g = Vec<D>::Zero()) {
   Interpolated<D> s;
-  cells.for_each_neighbor(x, P.x, [&](Index j, const Vec<D>&, Real r2) {
+  cells.for_each_neighbor(x, P.x, [&](Index j, const Vec<D>& r, Real r2) {
     const Real w = W.value(std::sqrt(r2)) * P.mass[j] / P.rho[j];
     s.fraction += w;
+    s.p_wall += w * (P.p[j] + P.rho[j] * g.dot(r));  // r = x - x_j
     s.p += w * P.p[j];
     s.rho += w * P.rho[j];
     s.vel += w * P.v[j];
   });
   if (s.fraction > 0) {
     s.p /= s.fraction;
+    s.p_wall /= s.fraction;
     s.rho /= s.fraction;
     s.vel /= s.fraction;
   }
@@ -36,8 +38,9 @@ Interpolated<D> interpolate(const Vec<D>& x, const Particles<D>& P, const CellLi
 }  // namespace
 
 template <int D>
-ProbeWriter<D>::ProbeWriter(std::vector<ProbeSpec> probes, const std::string& path, Real dx)
-    : probes_(std::move(probes)), dx_(dx) {
+ProbeWriter<D>::ProbeWriter(std::vector<ProbeSpec> probes, const std::string& path, Real dx,
+                            const Vec<D>& gravity)
+    : probes_(std::move(probes)), dx_(dx), gravity_(gravity) {
   if (probes_.empty()) return;
   out_.open(path);
   if (!out_) throw std::runtime_error("cannot write " + path);
@@ -84,10 +87,11 @@ std::vector<double> ProbeWriter<D>::sample(const Particles<D>& P, const CellList
       vals.push_back(height);
       continue;
     }
-    const auto s = interpolate<D>(x0, P, cells, W);
+    const auto s = interpolate<D>(x0, P, cells, W, gravity_);
     const bool wet = s.fraction > Real(0.1);  // no fluid at the probe: write NaN, not 0
     for (const auto& f : pr.fields) {
       if (f == "p") vals.push_back(wet ? s.p : nan);
+      if (f == "p_wall") vals.push_back(wet ? s.p_wall : nan);
       if (f == "rho") vals.push_back(wet ? s.rho : nan);
       if (f == "vel")
         for (int d = 0; d < D; ++d) vals.push_back(wet ? s.vel[d] : nan);

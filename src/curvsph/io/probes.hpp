@@ -3,6 +3,14 @@
 // NAME.field (P1.p, P1.vel_x, ...; a gauge gives H1.height), one row per probe time.
 // Point values are Shepard-normalised SPH interpolations; a gauge's height is the distance
 // along its direction to the last point where the fluid fraction sum_j V_j W_j >= 1/2.
+// `p_wall` is the pressure a wall-mounted sensor at the point reads: the fluid pressure
+// extrapolated to the point as onto a fixed wall (Adami, Hu & Adams 2012, eq. 27 with zero
+// wall acceleration; the same as the boundary-integral wall pressure, item 3 of
+// boundary/integrals/integrals_boundary.cpp):
+//   p_wall(x) = sum_j (p_j + rho_j g.(x - x_j)) W V_j / sum_j W V_j.
+// A plain Shepard average `p` at a wall point is the pressure at the centroid of the half
+// support (about 0.75 h into the fluid), biased by the hydrostatic gradient there.
+// A probe whose fluid fraction is below 0.1 (dry) writes NaN.
 #include <fstream>
 #include <string>
 #include <vector>
@@ -17,7 +25,8 @@ namespace curvsph {
 template <int D>
 class ProbeWriter {
  public:
-  ProbeWriter(std::vector<ProbeSpec> probes, const std::string& path, Real dx);
+  ProbeWriter(std::vector<ProbeSpec> probes, const std::string& path, Real dx,
+              const Vec<D>& gravity = Vec<D>::Zero());
   bool empty() const { return probes_.empty(); }
   // Column names after `time`.
   std::vector<std::string> columns() const;
@@ -30,6 +39,7 @@ class ProbeWriter {
   std::vector<ProbeSpec> probes_;
   std::ofstream out_;
   Real dx_;
+  Vec<D> gravity_;
 };
 
 }  // namespace curvsph

@@ -72,7 +72,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   std::unique_ptr<ProbeWriter<D>> probes;
   if (o.write_files && !c.probes.empty())
     probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
-                                              static_cast<Real>(c.dx));
+                                              static_cast<Real>(c.dx),
+                                              c.gravity.head<D>().template cast<Real>());
   int snapshot = 0;
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || !c.write_vtk) return;

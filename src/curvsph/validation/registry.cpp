@@ -12,6 +12,8 @@ StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_
 StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
 StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_pipe_study.cpp
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic_tank_study.cpp
+StudyResult run_dam_break_study(const StudyContext& ctx);         // dam_break_study.cpp
+StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cost_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -35,6 +37,10 @@ const std::vector<Study>& validation_studies() {
       {"hydrostatic_tank",
        "2-D tank at rest, boundary integrals, geometric vs volume Shepard (Calderon §3.1)",
        run_hydrostatic_tank_study},
+      {"dam_break_3d", "3-D dam break against a box, SPHERIC test 2 (Calderon §3.2, Figs. 14-17)",
+       &run_dam_break_study},
+      {"shepard_cost", "Time per step: gamma = 1, volume and geometric Shepard (Calderon Table 1)",
+       &run_shepard_cost_study},
   };
   return studies;
 }

@@ -167,6 +167,7 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
                         c.periodic);
   elem_cells_.build(ex_);
   p_wall_.assign(m, 0);
+  if (mode_ == ShepardMode::geometric) geometric_ = GeometricShepard<D>(el_, W_.h, quad_);
   built_ = true;
 }
 
@@ -222,7 +223,7 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       case ShepardMode::monolithic: {
         if (idx.empty()) break;
         auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
-          return mode_ == ShepardMode::geometric ? shepard_geometric<D>(el_, cand, xs, h, quad_)
+          return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
                                                  : shepard_monolithic<D>(el_, cand, xs, h, quad_);
         };
         const Real tol = Real(1e-6) * W_.h;

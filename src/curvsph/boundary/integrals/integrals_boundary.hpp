@@ -53,6 +53,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   const CellList<D>& fluid_cells_;
   ShepardMode mode_;
   ShepardQuadrature quad_;
+  GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
   bool wall_force_ = false;
   bool consistent_ = false;  // boundary.pressure: symmetric (default) | consistent
   Real dx_ = 0;

@@ -1,7 +1,10 @@
 #include "curvsph/boundary/integrals/shepard.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -315,10 +318,26 @@ double subtended_angle<3>(const BoundaryElements<3>& el, std::size_t j, const Ve
 namespace {
 
 // The geometric factor over the elements `for_each(fn)` visits (all, or a candidate list).
-template <int D, class ForEach>
+// Singular and polynomial parts element by element (shepard_geometric's quadrature).
+template <int D>
+double element_parts(const BoundaryElements<D>& el, std::span<const std::size_t> near,
+                     const VecD<D>& x, const VecD<D>& xs, const BoundaryKernel<D>& F,
+                     const ShepardQuadrature& quad) {
+  double angles = 0, poly = 0;
+  for (std::size_t j : near) {
+    angles += subtended_angle<D>(el, j, xs);
+    poly += poly_part(el, j, x, F, quad);
+  }
+  return angles / sphere_measure<D>() + poly;
+}
+
+// `skip_far`: leave out elements whose exact distance is >= 2h (GeometricShepard);
+// `parts_of(near, x, xs)`: the sum over the elements `near` of the singular part (angle /
+// solid angle over the sphere's measure, seen from xs) and the polynomial part (at x).
+template <int D, class ForEach, class Parts>
 double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
-                      const ShepardQuadrature& quad, const ForEach& for_each) {
-  const BoundaryKernel<D> F(h);
+                      const ShepardQuadrature& quad, const ForEach& for_each, bool skip_far,
+                      const Parts& poly_of) {
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
@@ -330,8 +349,9 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
   double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
   for_each([&](std::size_t j) {
     if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) return;
-    near.push_back(j);
     const double d = element_distance(el, j, x);
+    if (skip_far && d >= support) return;
+    near.push_back(j);
     bool hit = d <= tol;
     if (!hit && j < el.gap.size() && el.gap[j] > 0.0 && d <= el.gap[j] + tol) {
       // Between the element and the curved wall it stands for: on the wall.
@@ -358,12 +378,7 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
     for (std::size_t j : touched) cmin = std::min(cmin, el.normal[j].dot(m));
     xs = x + (1.5 * behind / std::max(cmin, 0.2) + 1e-9 * h) * m;
   }
-  double angles = 0, poly = 0;
-  for (std::size_t j : near) {
-    angles += subtended_angle<D>(el, j, xs);
-    poly += poly_part(el, j, x, F, quad);
-  }
-  return 1.0 - angles / sphere_measure<D>() - poly;
+  return 1.0 - poly_of(std::span<const std::size_t>(near), x, xs);
 }
 
 }  // namespace
@@ -371,17 +386,209 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
 template <int D>
 double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                          const ShepardQuadrature& quad) {
-  return geometric_impl<D>(el, x, h, quad, [&](const auto& fn) {
-    for (std::size_t j = 0; j < el.size(); ++j) fn(j);
-  });
+  const BoundaryKernel<D> F(h);
+  return geometric_impl<D>(
+      el, x, h, quad,
+      [&](const auto& fn) {
+        for (std::size_t j = 0; j < el.size(); ++j) fn(j);
+      },
+      false,
+      [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
+        return element_parts(el, near, y, ys, F, quad);
+      });
 }
 
 template <int D>
 double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
                          const VecD<D>& x, double h, const ShepardQuadrature& quad) {
-  return geometric_impl<D>(el, x, h, quad, [&](const auto& fn) {
+  const BoundaryKernel<D> F(h);
+  return geometric_impl<D>(
+      el, x, h, quad,
+      [&](const auto& fn) {
+        for (std::size_t j : candidates) fn(j);
+      },
+      false,
+      [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
+        return element_parts(el, near, y, ys, F, quad);
+      });
+}
+
+template <int D>
+GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
+                                      const ShepardQuadrature& quad)
+    : h_(h), quad_(quad) {
+  if constexpr (D == 3) {
+    // Twins: an edge b -> a of another element in the same plane with the same normal
+    // cancels this element's a -> b term exactly (operator() below). Vertices are matched
+    // on a grid of 1e-9 h.
+    const double grid = 1e-9 * h;
+    using Key = std::array<long long, 6>;
+    auto key = [&](const Vec3d& a, const Vec3d& b) {
+      Key k;
+      for (int d = 0; d < 3; ++d) {
+        k[static_cast<std::size_t>(d)] = std::llround(a[d] / grid);
+        k[static_cast<std::size_t>(d + 3)] = std::llround(b[d] / grid);
+      }
+      return k;
+    };
+    std::map<Key, std::vector<std::int64_t>> edges;  // directed edge a -> b: elements
+    twin_.assign(4 * el.size(), -1);
+    for (std::size_t j = 0; j < el.size(); ++j) {
+      const auto& v = el.vertices[j];
+      const int m = el.vertex_count[j];
+      for (int k = 0; k < m; ++k)
+        edges[key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)])]
+            .push_back(static_cast<std::int64_t>(j));
+    }
+    for (std::size_t j = 0; j < el.size(); ++j) {
+      const auto& v = el.vertices[j];
+      const int m = el.vertex_count[j];
+      for (int k = 0; k < m; ++k) {
+        const auto it = edges.find(
+            key(v[static_cast<std::size_t>((k + 1) % m)], v[static_cast<std::size_t>(k)]));
+        if (it == edges.end()) continue;
+        for (std::int64_t o : it->second) {
+          const auto so = static_cast<std::size_t>(o);
+          const bool same_plane = (el.normal[so] - el.normal[j]).norm() < 1e-12 &&
+                                  std::abs(el.normal[j].dot(el.vertices[so][0] - v[0])) < grid;
+          if (same_plane && o != static_cast<std::int64_t>(j)) {
+            twin_[4 * j + static_cast<std::size_t>(k)] = o;
+            break;
+          }
+        }
+      }
+    }
+  }
+}
+
+namespace {
+
+// Psi(q) = int_0^q F_Pext(s) s ds in units of h (3-D, DESIGN.md §4 kernel): inside the support
+// the antiderivative of q h^3 F_P, outside of q / (4 pi q^3), continuous at q = 2.
+inline double psi3(double q) {
+  constexpr double pi = std::numbers::pi;
+  if (q >= 2.0) return (0.375 - 0.25 / q) / pi;
+  const double q2 = q * q;
+  return ((((((3.0 / 1024.0 * q - 15.0 / 512.0) * q + 7.0 / 64.0) * q - 21.0 / 128.0) * q) * q) *
+              q2 +
+          7.0 / 32.0 * q2) /
+         pi;
+}
+
+}  // namespace
+
+template <int D>
+double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
+                                       std::span<const std::size_t> candidates,
+                                       const VecD<D>& x) const {
+  const BoundaryKernel<D> F(h_);
+  auto for_each = [&](const auto& fn) {
     for (std::size_t j : candidates) fn(j);
-  });
+  };
+  if constexpr (D == 2) {
+    return geometric_impl<D>(
+        el, x, h_, quad_, for_each, true,
+        [&](std::span<const std::size_t> near, const Vec2d& y, const Vec2d& ys) {
+          return element_parts(el, near, y, ys, F, quad_);
+        });
+  } else {
+    // Polynomial part of a planar polygon, exact in the radial direction. With f the foot of
+    // y on the polygon's plane, d = n.(v0 - y) and q-units (lengths / h):
+    //   int_poly n.(z - y) F_Pext(|z - y|) dA = d sum_edges int_triangle(f, a, b)
+    //   and int_triangle = int dtheta [Psi(sqrt(d^2 + rho_e^2)) - Psi(|d|)]
+    // (polar coordinates about f, rho dr = u du), signed by the triangle's orientation, which
+    // is Stokes' edge form of the area integral and holds wherever f lies. Along the edge
+    // z = a + t e (e unit, p = the signed distance of f from the edge line), dtheta =
+    // p dt / (p^2 + t^2), so each edge gives
+    //   p int H(p^2 + t^2) dt,   H(s) = [Psi(sqrt(d^2 + s)) - Psi(|d|)] / s   (bounded, smooth)
+    // with Gauss points on pieces split at the edge's closest point to f. An edge shared with
+    // a twin of the same plane that is also among the elements cancels it exactly (the
+    // reversed edge gives the opposite term): only the rim of the candidate patch of a flat
+    // wall face is integrated.
+    const GaussRule& g = gauss_rule(2 * quad_.gauss_points);
+    const double inv_h = F.inv_h;
+    const double max_piece = quad_.max_piece_over_h;  // in units of h
+    auto parts = [&](std::span<const std::size_t> near, const Vec3d& y, const Vec3d& ys) {
+      thread_local std::vector<std::uint32_t> mark;
+      thread_local std::uint32_t stamp = 0;
+      if (mark.size() != el.size()) {
+        mark.assign(el.size(), 0);
+        stamp = 0;
+      }
+      if (++stamp == 0) {
+        std::fill(mark.begin(), mark.end(), 0);
+        stamp = 1;
+      }
+      for (std::size_t j : near) mark[j] = stamp;
+      // Solid angles: element j's is the signed sum of those of the triangles (f, a, b) over
+      // its edges a -> b, f the foot of ys on its plane (Van Oosterom & Strackee with unit
+      // vectors, signed as subtended_angle); twins cancel as for the polynomial part. A point
+      // in the element's plane sees it under a zero angle (a point on it has been moved off
+      // the wall by geometric_impl).
+      double omega = 0;
+      for (std::size_t j : near) {
+        const Vec3d n = el.normal[j];
+        const auto& v = el.vertices[j];
+        const double ds = n.dot(v[0] - ys);
+        if (std::abs(ds) <= 1e-14 * h_) continue;
+        const Vec3d fh = ds > 0 ? n : Vec3d(-n);  // unit vector from ys to its foot
+        const int m = el.vertex_count[j];
+        for (int k = 0; k < m; ++k) {
+          const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
+          if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
+          const Vec3d a = (v[static_cast<std::size_t>(k)] - ys).normalized();
+          const Vec3d b = (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized();
+          omega -= 2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
+        }
+      }
+      double total = omega / (4 * std::numbers::pi);
+      for (std::size_t j : near) {
+        const Vec3d n = el.normal[j];
+        const auto& v = el.vertices[j];
+        const double dn = n.dot(v[0] - y);
+        if (std::abs(dn) <= 1e-14 * h_) continue;  // y in the element's plane: n.(z - y) = 0
+        const Vec3d f = y + dn * n;
+        const double d = dn * inv_h, d2 = d * d, psi0 = psi3(std::abs(d));
+        auto H = [&](double s) { return (psi3(std::sqrt(d2 + s)) - psi0) / s; };
+        const int m = el.vertex_count[j];
+        double sum = 0;
+        for (int k = 0; k < m; ++k) {
+          const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
+          if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
+          const Vec3d& a = v[static_cast<std::size_t>(k)];
+          const Vec3d& b = v[static_cast<std::size_t>((k + 1) % m)];
+          const Vec3d e = (b - a).normalized();
+          const double p = n.dot((a - f).cross(e)) * inv_h;
+          if (p == 0.0) continue;
+          const double ta = e.dot(a - f) * inv_h, tb = e.dot(b - f) * inv_h;
+          double cuts[3] = {ta, tb, tb};
+          int ncut = 2;
+          if (ta < 0.0 && tb > 0.0) {
+            cuts[1] = 0.0;
+            ncut = 3;
+          }
+          double edge = 0;
+          for (int c = 0; c + 1 < ncut; ++c) {
+            const double len = cuts[c + 1] - cuts[c];
+            if (len <= 0) continue;
+            const int pieces = std::max(1, static_cast<int>(std::ceil(len / max_piece)));
+            const double dl = len / pieces;
+            for (int pc = 0; pc < pieces; ++pc) {
+              const double t0 = cuts[c] + pc * dl;
+              for (std::size_t i = 0; i < g.x.size(); ++i) {
+                const double t = t0 + g.x[i] * dl;
+                edge += g.w[i] * dl * H(p * p + t * t);
+              }
+            }
+          }
+          sum += p * edge;
+        }
+        total += d * sum;
+      }
+      return total;
+    };
+    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts);
+  }
 }
 
 namespace {
@@ -481,6 +688,8 @@ std::vector<double> shepard_factor(ShepardMode mode, const BoundaryElements<D>& 
       std::span<const VecD<D>>, std::span<const double>, const ShepardQuadrature&);
 CURVSPH_SHEPARD_INSTANTIATE(2)
 CURVSPH_SHEPARD_INSTANTIATE(3)
+template class GeometricShepard<2>;
+template class GeometricShepard<3>;
 #undef CURVSPH_SHEPARD_INSTANTIATE
 
 }  // namespace curvsph

@@ -17,6 +17,7 @@
 //                the paper's "gamma = 1/2 on the contour" rule (monolithic_contour_half).
 //  - volume:     gamma_i = sum_j W_ij V_j over fluid particles (Calderon eq. 4).
 //  - none:       gamma = 1.
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -64,6 +65,33 @@ double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::siz
 template <int D>
 double shepard_monolithic(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
                           const VecD<D>& x, double h, const ShepardQuadrature& quad = {});
+
+// The geometric factor of a fixed element set, evaluated many times (the solver: every particle
+// near a wall, every step). Same singular part as shepard_geometric (exact solid angles); the
+// polynomial part of each planar element is integrated exactly in the radial direction about
+// the foot of x and with Gauss points along the element's edges (derivation in shepard.cpp),
+// and an edge shared by two coplanar elements that are both in the sum cancels: only the rim
+// of the patch of a flat wall near x is integrated. Elements whose distance from x is >= 2h
+// are left out (F = F_D + F_Pext = 0 on them). The two evaluations agree to the quadrature
+// error of shepard_geometric (tests/boundary/test_shepard_fast.cpp); this one is the more
+// accurate. 2-D elements take shepard_geometric's path (a 2-D wall costs little).
+template <int D>
+class GeometricShepard {
+ public:
+  GeometricShepard() = default;
+  GeometricShepard(const BoundaryElements<D>& el, double h, const ShepardQuadrature& quad = {});
+  // Candidates as for shepard_geometric (the elements reaching into the support ball of x
+  // must be among them). `el` must be the element set given to the constructor.
+  double operator()(const BoundaryElements<D>& el, std::span<const std::size_t> candidates,
+                    const VecD<D>& x) const;
+  double h() const { return h_; }
+
+ private:
+  double h_ = 0;
+  ShepardQuadrature quad_;
+  // twin_[4 j + k]: the coplanar element sharing edge k of element j (reversed), or -1 (3-D).
+  std::vector<std::int64_t> twin_;
+};
 
 template <int D>
 double shepard_volume(std::span<const VecD<D>> positions, std::span<const double> volumes,

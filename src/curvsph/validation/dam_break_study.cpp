@@ -1,0 +1,160 @@
+// `curvsph validate dam_break_3d`: SPHERIC benchmark test 2, the 3-D dam break against a box
+// (Kleefsman et al. 2005; Calderon-Sanchez et al. §3.2), boundary integrals with the
+// geometric Shepard factor, against the MARIN record (analysis/dam_break_analysis.hpp).
+//
+// A run takes hours on two cores, so a run directory that already holds metrics.json and
+// the same `settings.txt` (the case overrides of that run) is reused rather than rerun;
+// delete the directory to rerun it.
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "curvsph/core/error.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/solver/run.hpp"
+#include "curvsph/validation/study.hpp"
+
+namespace curvsph {
+namespace {
+
+struct DamBreakRun {
+  int cells;     // particles across the water depth 0.55 m (dx = 0.55 / cells)
+  double t_end;  // s
+};
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+StudyResult run_dam_break_study(const StudyContext& ctx) {
+  const auto case_path = ctx.source_dir / "cases" / "dam_break_3d.yaml";
+  // The issue asks for 0.55/20 and 0.55/30 to t = 1.5 s at least (the full study). On 2
+  // cores shared by six users the 0.55/20 run advanced ~0.1 s of flow in 17 min, so the quick
+  // study runs 0.55/15 (13 000 particles) through the first impact on the box (P1 peaks at
+  // 0.415 s in the experiment) only.
+  std::vector<DamBreakRun> runs;
+  if (ctx.quick)
+    runs = {{15, 0.45}};
+  else
+    runs = {{20, 1.5}, {30, 1.5}};
+  std::filesystem::create_directories(ctx.out_dir);
+  StudyResult r;
+  std::string table =
+      "| run | particles | t reached | P1 peak (Pa) | at (s) | P1 impact (s) | P2 peak (Pa) | "
+      "H2 at 1 s (m) | P1 RMS / P1exp peak | P2 RMS / P1exp peak | wall s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  nlohmann::json exp_row;
+  std::vector<std::string> tags;
+  for (const auto& run : runs) {
+    const std::string tag = fmt::format("dx{}", run.cells);
+    const std::vector<std::string> settings = {
+        fmt::format("resolution.dx={:.17g}", 0.55 / run.cells),
+        fmt::format("time.end={:.17g}", run.t_end), "output.vtk=false"};
+    std::string stamp;
+    for (const auto& s : settings) stamp += s + "\n";
+    const auto dir = ctx.out_dir / tag;
+    nlohmann::json m;
+    if (std::filesystem::exists(dir / "metrics.json") && read_text(dir / "settings.txt") == stamp) {
+      std::cerr << tag << ": reusing the run in " << dir << "\n";
+      m = nlohmann::json::parse(read_text(dir / "metrics.json"));
+    } else {
+      std::filesystem::create_directories(dir);
+      std::ofstream(dir / "settings.txt") << stamp;
+      const Case c = read_case(case_path, settings);
+      RunOptions o;
+      o.out_dir = dir;
+      o.threads = ctx.threads;
+      try {
+        m = run_case(c, o);
+      } catch (const InstabilityError& e) {
+        std::cerr << tag << ": " << e.what() << "\n";
+        m = nlohmann::json::parse(read_text(dir / "metrics_unstable.json"));
+      }
+    }
+    tags.push_back(tag);
+    auto num = [&](const char* k) {
+      return m.contains(k) && m[k].is_number() ? m[k].get<double>() : std::nan("");
+    };
+    for (const char* k : {"p1_peak", "p1_peak_time", "p1_impact_time", "p2_peak", "h2_at_1s",
+                          "p1_rms_error", "p2_rms_error", "time_reached", "particles"})
+      r.metrics[tag + "_" + k] = num(k);
+    exp_row = m;
+    table += fmt::format(
+        "| `{}` | {:.0f} | {:.3f} | {:.0f} | {:.4f} | {:.4f} | {:.0f} | {:.3f} | {:.3f} | {:.3f} | "
+        "{:.0f} |\n",
+        tag, num("particles"), num("time_reached"), num("p1_peak"), num("p1_peak_time"),
+        num("p1_impact_time"), num("p2_peak"), num("h2_at_1s"), num("p1_rms_error"),
+        num("p2_rms_error"), num("wall_seconds"));
+    const double pe = num("p1_peak_exp"), te = num("p1_impact_time_exp");
+    const std::string ref =
+        fmt::format("MARIN experiment (Kleefsman et al. 2005), 0.55/{}", run.cells);
+    const bool reached = num("time_reached") >= num("p1_peak_time_exp") + 0.02;
+    const double dt_impact = num("p1_impact_time") - te;
+    r.summary.push_back({"dam_break_3d." + tag + ".p1_impact_time_error_s", dt_impact,
+                         fmt::format("abs <= 0.05 (exp. {:.3f} s)", te), ref,
+                         reached && std::abs(dt_impact) <= 0.05});
+    const double ratio = num("p1_peak") / pe;
+    r.summary.push_back({"dam_break_3d." + tag + ".p1_peak_ratio", ratio,
+                         fmt::format("0.75 .. 1.25 (exp. {:.0f} Pa)", pe), ref,
+                         reached && ratio >= 0.75 && ratio <= 1.25});
+    r.summary.push_back({"dam_break_3d." + tag + ".p1_rms_error", num("p1_rms_error"),
+                         fmt::format("reported (t <= {:.2f} s)", num("rms_window_end")), ref,
+                         true});
+  }
+  r.metrics["p1_peak_exp"] = exp_row.value("p1_peak_exp", 0.0);
+  r.metrics["p1_peak_time_exp"] = exp_row.value("p1_peak_time_exp", 0.0);
+  r.metrics["p1_impact_time_exp"] = exp_row.value("p1_impact_time_exp", 0.0);
+  r.metrics["p2_peak_exp"] = exp_row.value("p2_peak_exp", 0.0);
+  r.metrics["h2_at_1s_exp"] = exp_row.value("h2_at_1s_exp", 0.0);
+  std::vector<std::string> args = {ctx.out_dir.string()};
+  args.insert(args.end(), tags.begin(), tags.end());
+  run_plot_script(ctx, "plot_dam_break.py", args);
+
+  std::ofstream md(ctx.out_dir / "README.md");
+  md << "# 3-D dam break against a box (SPHERIC test 2; Calderon et al. §3.2)\n\n"
+        "Case `cases/dam_break_3d.yaml`: tank 3.22 x 1 x 1 m, water column 1.228 x 1 x 0.55 m "
+        "at the right end, box 0.161 x 0.403 x 0.161 m on the floor (face toward the water at "
+        "x = 0.8245 m); rho0 = 998, nu = 1e-6, linear EOS with c0 = 40 m/s, continuity density "
+        "with delta-SPH (0.1), no artificial viscosity, h/dx = 2, walls by boundary integrals "
+        "with the geometric Shepard factor, no-slip (BI viscous wall term), initial hydrostatic "
+        "pressure. Experiment: `../shared/data/spheric2/test_case_2_exp_data.dat` (its height "
+        "columns are H3, H2, H1, H4 in the benchmark's numbering; see the data README).\n\n"
+        "**Pressure sensors.** P1-P4 sit on the box's face toward the water, P5-P8 on its top. "
+        "A wall-mounted sensor reads the pressure at the wall surface, so the probes use the "
+        "field `p_wall`: the fluid pressure extrapolated onto the fixed wall at the sensor "
+        "point, sum_j (p_j + rho_j g.(x_s - x_j)) W V_j / sum_j W V_j (Adami, Hu & Adams 2012 "
+        "eq. 27 with zero wall acceleration; the same formula as the boundary-integral wall "
+        "pressure, so the sensor reads what the wall feels in the model). A plain Shepard "
+        "average at the wall point (field `p`) is the pressure about 0.75 h inside the fluid, "
+        "and a Shepard sum over fluid particles at a wall is incomplete (about 1/2), which the "
+        "normalisation removes in both. A dry sensor (fluid fraction < 0.1) reads 0 in the "
+        "figures. Height gauges: distance along +z to the last point where the fluid fraction "
+        "sum_j V_j W_j >= 1/2.\n\n"
+        "Impact time: first time P1 exceeds 20 % of the experimental P1 peak (same rule for "
+        "the experiment). RMS errors over t in [0, min(1.5 s, end)], over the experimental P1 "
+        "peak.\n\n"
+        "**Runs shortened** (this README comes from `--quick`): the issue asks for 0.55/20 and "
+        "0.55/30 to t = 1.5 s at least (the full study, `curvsph validate dam_break_3d`). On 2 "
+        "cores shared by six users the 0.55/20 run (31 680 particles) advanced ~0.1 s of flow in "
+        "17 min (and, without the wall force, lost a particle through the floor at t = 0.12 s), "
+        "so the quick study runs the coarser 0.55/15 (13 000 particles) to t = 0.45 s, through "
+        "the first impact on the box; `h2_at_1s` is not reached (null).\n\n"
+        "## Runs\n\n"
+     << table << "\n## Summary\n\n"
+     << summary_markdown(r.summary)
+     << "\n## Figures\n\n![pressures P1-P8](pressures.png)\n\n![heights H1-H4](heights.png)\n\n"
+        "Data: `RUN/probes.csv`, `RUN/dam_break_comparison.csv` (simulated and experimental "
+        "side by side), `RUN/metrics.json`, `metrics.json`. Regenerate: `curvsph validate "
+        "dam_break_3d [--quick]` (a run directory with the same `settings.txt` and a "
+        "metrics.json is reused; delete it to rerun).\n";
+  return r;
+}
+
+}  // namespace curvsph

@@ -1,0 +1,89 @@
+// The dam_break analysis (analysis/dam_break_analysis.hpp) on synthetic records: a Gaussian
+// pressure pulse in the "experiment" and a delayed, scaled one in the "run"; every figure is
+// compared with its value worked out independently from the two formulas.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "curvsph/analysis/analysis.hpp"
+#include "curvsph/core/error.hpp"
+
+using namespace curvsph;
+
+namespace {
+
+double pulse(double t, double t0, double a) {
+  return a * std::exp(-std::pow((t - t0) / 0.02, 2));
+}
+
+}  // namespace
+
+TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
+  const auto dir = std::filesystem::temp_directory_path() / "curvsph_test_dam_break";
+  std::filesystem::create_directories(dir);
+  // Experiment: 13 columns, heights stored as H3, H2, H1, H4 (the data set's order).
+  {
+    std::ofstream e(dir / "exp.dat");
+    e << "Time P1 P2 P3 P4 P5 P6 P7 P8 H1 H2 H3 H4\n";
+    for (int i = 0; i <= 2000; ++i) {
+      const double t = i * 1e-3;
+      e << t << ' ' << pulse(t, 0.40, 10000) << ' ' << pulse(t, 0.40, 5000) << " 0 0 0 0 0 0 "
+        << 0.3 * t << ' ' << 0.2 * t << ' ' << 0.1 * t << " 0.5\n";
+    }
+  }
+  // Run: P1 delayed by 10 ms and scaled by 0.9, P2 exact; H2 = 0.2 t + 0.01.
+  {
+    std::ofstream p(dir / "probes.csv");
+    p << "time";
+    for (int k = 1; k <= 8; ++k) p << ",P" << k << ".p_wall";
+    for (int k = 1; k <= 4; ++k) p << ",H" << k << ".height";
+    p << '\n';
+    for (int i = 0; i <= 1100; ++i) {
+      const double t = i * 1e-3;
+      p << t << ',' << pulse(t, 0.41, 9000) << ',' << pulse(t, 0.40, 5000) << ",nan,0,0,0,0,0,0.1,"
+        << 0.2 * t + 0.01 << ",0.3,0.5\n";
+    }
+  }
+  Case c;
+  c.file = dir / "case.yaml";
+  YAML::Node params;
+  params["experiment"] = "exp.dat";
+  auto a = make_analysis<3>("dam_break", params, c);
+  nlohmann::json m;
+  Particles<3> P;
+  a->finish(1.1, P, m, dir);
+  EXPECT_NEAR(m["p1_peak"].get<double>(), 9000, 1e-6);
+  EXPECT_NEAR(m["p1_peak_time"].get<double>(), 0.41, 1e-9);
+  EXPECT_NEAR(m["p1_peak_exp"].get<double>(), 10000, 1e-6);
+  EXPECT_NEAR(m["p2_peak"].get<double>(), 5000, 1e-6);
+  // First 1 ms sample above 2000 Pa: 9000 exp(-u^2) > 2000 <=> u < sqrt(ln 4.5).
+  EXPECT_NEAR(m["p1_impact_time"].get<double>(),
+              std::ceil((0.41 - 0.02 * std::sqrt(std::log(4.5))) * 1e3) * 1e-3, 1e-9);
+  EXPECT_NEAR(m["p1_impact_time_exp"].get<double>(),
+              std::ceil((0.40 - 0.02 * std::sqrt(std::log(5.0))) * 1e3) * 1e-3, 1e-9);
+  // H2 is the second height column of the file (0.2 t), the run's H2 is 0.2 t + 0.01.
+  EXPECT_NEAR(m["h2_at_1s"].get<double>(), 0.21, 1e-9);
+  EXPECT_NEAR(m["h2_at_1s_exp"].get<double>(), 0.2, 1e-9);
+  // RMS over t <= 1.1: P2 identical; P1 by a sum over the samples.
+  double e2 = 0;
+  for (int i = 0; i <= 1100; ++i) {
+    const double t = i * 1e-3;
+    e2 += std::pow(pulse(t, 0.41, 9000) - pulse(t, 0.40, 10000), 2);
+  }
+  EXPECT_NEAR(m["p1_rms_error"].get<double>(), std::sqrt(e2 / 1101) / 10000, 1e-6);
+  EXPECT_NEAR(m["p2_rms_error"].get<double>(), 0.0, 1e-6);
+  EXPECT_TRUE(std::filesystem::exists(dir / "dam_break_comparison.csv"));
+
+  // A missing experiment file is an input error naming the key.
+  YAML::Node bad;
+  bad["experiment"] = "missing.dat";
+  try {
+    make_analysis<3>("dam_break", bad, c);
+    FAIL() << "no error for a missing experiment file";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("analysis.dam_break.experiment"), std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
+}

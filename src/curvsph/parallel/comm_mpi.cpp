@@ -2,6 +2,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -34,8 +35,17 @@ int checked_int(std::size_t n) {
 
 CommStats Comm::stats_{};
 
+// MPI starts only under a launcher (mpirun / mpiexec / srun set these). A plain `curvsph`
+// stays a single process without MPI: it starts faster and can itself launch `mpirun`
+// (validate scaling), which an MPI singleton process cannot do reliably.
+static bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
 Session::Session(int& argc, char**& argv) {
-  if (!initialised()) MPI_Init(&argc, &argv);
+  if (!initialised() && launched_by_mpi()) MPI_Init(&argc, &argv);
 }
 Session::~Session() {
   if (initialised()) MPI_Finalize();

@@ -15,7 +15,8 @@
 
 namespace curvsph::mpi {
 
-// Starts MPI for the lifetime of the program (constructed first thing in main) and ends it.
+// Starts MPI for the lifetime of the program (constructed first thing in main) when the
+// process was started by an MPI launcher, and ends it.
 class Session {
  public:
   Session(int& argc, char**& argv);

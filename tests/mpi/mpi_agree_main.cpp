@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   try {
     mpi::agree_on_input(comm, [&] {
       if (comm.rank() == comm.size() - 1)
-        throw InputError("case.yaml", "walls.1.radius", "found on rank " + std::to_string(comm.rank()));
+        throw InputError("case.yaml", "walls.1.radius",
+                         "found on rank " + std::to_string(comm.rank()));
     });
   } catch (const InputError& e) {
     ok = e.file() == "case.yaml" && e.key() == "walls.1.radius" &&
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     ok2 = std::string(e.what()) == "particle 7 on rank 1" && e.step() == 5 && e.particle() == 7;
   }
   const bool all = comm.min(static_cast<std::int64_t>(ok && ok2)) == 1 && comm.size() >= 2;
-  if (comm.root()) std::cout << (all ? "agree: every rank raised the same error\n" : "agree: FAILED\n");
+  if (comm.root())
+    std::cout << (all ? "agree: every rank raised the same error\n" : "agree: FAILED\n");
   return all ? 0 : 1;
 }

@@ -37,19 +37,21 @@ class MpiRun : public testing::CommandTest {
   // The last snapshot of a run: one .vtp, or the ranks' pieces; particles by id.
   template <int D>
   static std::map<std::int64_t, std::array<double, 2 * D + 3>> last_snapshot(const fs::path& out,
-                                                                              int np) {
+                                                                             int np) {
     std::vector<fs::path> files;
     int last = -1;
     for (const auto& e : fs::directory_iterator(out)) {
       const std::string f = e.path().filename().string();
-      if (f.rfind("particles_", 0) == 0 && f.size() >= 16) last = std::max(last, std::stoi(f.substr(10, 6)));
+      if (f.rfind("particles_", 0) == 0 && f.size() >= 16)
+        last = std::max(last, std::stoi(f.substr(10, 6)));
     }
     char base[32];
     std::snprintf(base, sizeof base, "particles_%06d", last);
     if (np == 1)
       files.push_back(out / (std::string(base) + ".vtp"));
     else
-      for (int r = 0; r < np; ++r) files.push_back(out / (std::string(base) + "_r" + std::to_string(r) + ".vtp"));
+      for (int r = 0; r < np; ++r)
+        files.push_back(out / (std::string(base) + "_r" + std::to_string(r) + ".vtp"));
     std::map<std::int64_t, std::array<double, 2 * D + 3>> by_id;
     for (const auto& f : files) {
       const Particles<D> p = io::read_particles<D>(f);
@@ -118,27 +120,30 @@ const std::string kCases = std::string(CURVSPH_SOURCE_DIR) + "/cases/";
 
 // Periodic on both axes, continuity + delta-SPH + shifting: every halo refresh is used.
 TEST_F(MpiRun, TaylorGreenSameParticlesOn1And2And4Ranks) {
-  same_on_1_2_4<2>(kCases + "taylor_green_2d.yaml --set resolution.dx=0.02 --set time.max_steps=20 "
-                   "--set output.every=10",
+  same_on_1_2_4<2>(kCases +
+                       "taylor_green_2d.yaml --set resolution.dx=0.02 --set time.max_steps=20 "
+                       "--set output.every=10",
                    1e-12);
 }
 
 // Ghost walls (rotating inner cylinder), summation density: ghosts of halo copies.
 TEST_F(MpiRun, CouetteSameParticlesOn1And2And4Ranks) {
-  same_on_1_2_4<2>(kCases + "couette.yaml --set resolution.dx=1e-3 --set time.max_steps=20 "
-                   "--set output.every=100",
+  same_on_1_2_4<2>(kCases +
+                       "couette.yaml --set resolution.dx=1e-3 --set time.max_steps=20 "
+                       "--set output.every=100",
                    1e-12);
 }
 
 TEST_F(MpiRun, BadInputStopsEveryRankWithOneMessage) {
-  const int rc = run_ranks(
-      2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
-             " --set walls.0.radius=-0.01");
+  const int rc = run_ranks(2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
+                                  " --set walls.0.radius=-0.01");
   EXPECT_EQ(rc, 2) << err_;
   // Rank 0 prints it once; the key and reason are named.
   EXPECT_NE(err_.find("walls.0"), std::string::npos) << err_;
   std::size_t lines = 0;
-  for (std::size_t at = err_.find("error:"); at != std::string::npos; at = err_.find("error:", at + 1)) ++lines;
+  for (std::size_t at = err_.find("error:"); at != std::string::npos;
+       at = err_.find("error:", at + 1))
+    ++lines;
   EXPECT_EQ(lines, 1u) << err_;
 }
 

@@ -49,7 +49,8 @@ TEST(ScalingModel, StepTimeAddsHaloComputeAndMessages) {
   const StepTime t = step_time(m, 1e5, 0.1, 26, 64);
   EXPECT_DOUBLE_EQ(t.compute, 1.0);
   EXPECT_DOUBLE_EQ(t.halo_compute, 0.1);
-  // 3 x 26 messages + 3 x 63 size exchanges + 4 x log2(64) reductions, 1 us each, + 1e4 x 100 B / 1 GB/s.
+  // 3 x 26 messages + 3 x 63 size exchanges + 4 x log2(64) reductions, 1 us each, + 1e4 x 100 B / 1
+  // GB/s.
   EXPECT_NEAR(t.communication, (78 + 189 + 24) * 1e-6 + 1e-3, 1e-15);
   EXPECT_DOUBLE_EQ(step_time(m, 1e5, 0.1, 26, 1).communication, 0.0);
 }

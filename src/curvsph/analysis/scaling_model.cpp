@@ -9,7 +9,8 @@ namespace {
 
 void split(std::vector<RankBox>& out, RankBox b, int ranks, double L) {
   if (ranks == 1) {
-    for (int d = 0; d < 3; ++d) b.cut[static_cast<std::size_t>(d)] = b.hi[d] - b.lo[d] < L * (1 - 1e-12);
+    for (int d = 0; d < 3; ++d)
+      b.cut[static_cast<std::size_t>(d)] = b.hi[d] - b.lo[d] < L * (1 - 1e-12);
     out.push_back(b);
     return;
   }
@@ -57,9 +58,10 @@ double halo_fraction(const RankBox& b, double w) {
       grown = inner + 2 * w * (cut_len[0] + cut_len[1]) + pi * w * w;
       break;
     default:
-      grown = inner +
-              2 * w * (cut_len[0] * cut_len[1] + cut_len[1] * cut_len[2] + cut_len[0] * cut_len[2]) +
-              pi * w * w * (cut_len[0] + cut_len[1] + cut_len[2]) + 4 * pi / 3 * w * w * w;
+      grown =
+          inner +
+          2 * w * (cut_len[0] * cut_len[1] + cut_len[1] * cut_len[2] + cut_len[0] * cut_len[2]) +
+          pi * w * w * (cut_len[0] + cut_len[1] + cut_len[2]) + 4 * pi / 3 * w * w * w;
   }
   return (grown - inner) * other / (inner * other);
 }

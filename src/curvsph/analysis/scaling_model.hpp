@@ -39,12 +39,12 @@ int neighbour_count(const std::vector<RankBox>& boxes, int r, double w, double L
 // implemented (MPI_Alltoall of the message sizes before every exchange), P - 1 latencies per
 // exchange. alltoall_sizes = false models a neighbour-only exchange instead.
 struct StepModel {
-  double rate = 0;              // particle-steps per second of one rank on one core (measured)
-  double exchanges = 0;         // exchanges per step (measured from message counts)
-  double bytes_per_halo = 0;    // bytes sent per halo particle per step (measured)
-  double reductions = 4;        // dt, imbalance (2), state check per step
-  double latency = 2e-6;        // s per message (assumed: InfiniBand-class network)
-  double bandwidth = 1e10;      // bytes/s per rank (assumed)
+  double rate = 0;            // particle-steps per second of one rank on one core (measured)
+  double exchanges = 0;       // exchanges per step (measured from message counts)
+  double bytes_per_halo = 0;  // bytes sent per halo particle per step (measured)
+  double reductions = 4;      // dt, imbalance (2), state check per step
+  double latency = 2e-6;      // s per message (assumed: InfiniBand-class network)
+  double bandwidth = 1e10;    // bytes/s per rank (assumed)
   bool alltoall_sizes = true;
 };
 struct StepTime {

@@ -22,7 +22,9 @@ bool initialised() {
 struct Timed {
   CommStats& s;
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  ~Timed() { s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  ~Timed() {
+    s.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
 };
 
 int checked_int(std::size_t n) {
@@ -58,7 +60,9 @@ Comm Comm::world() {
   MPI_Comm_size(MPI_COMM_WORLD, &s);
   return Comm(r, s);
 }
-bool Comm::mpi_enabled() { return true; }
+bool Comm::mpi_enabled() {
+  return true;
+}
 
 namespace {
 template <class T>
@@ -72,9 +76,15 @@ T reduce(int size, T v, MPI_Datatype type, MPI_Op op, CommStats& st) {
 }
 }  // namespace
 
-double Comm::sum(double v) const { return reduce(size_, v, MPI_DOUBLE, MPI_SUM, stats_); }
-double Comm::min(double v) const { return reduce(size_, v, MPI_DOUBLE, MPI_MIN, stats_); }
-double Comm::max(double v) const { return reduce(size_, v, MPI_DOUBLE, MPI_MAX, stats_); }
+double Comm::sum(double v) const {
+  return reduce(size_, v, MPI_DOUBLE, MPI_SUM, stats_);
+}
+double Comm::min(double v) const {
+  return reduce(size_, v, MPI_DOUBLE, MPI_MIN, stats_);
+}
+double Comm::max(double v) const {
+  return reduce(size_, v, MPI_DOUBLE, MPI_MAX, stats_);
+}
 std::int64_t Comm::sum(std::int64_t v) const {
   return reduce(size_, v, MPI_INT64_T, MPI_SUM, stats_);
 }
@@ -95,8 +105,7 @@ void Comm::sum(std::vector<double>& v) const {
   if (size_ == 1 || v.empty()) return;
   Timed t{stats_};
   ++stats_.collectives;
-  MPI_Allreduce(MPI_IN_PLACE, v.data(), checked_int(v.size()), MPI_DOUBLE, MPI_SUM,
-                MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), checked_int(v.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
 void Comm::barrier() const {
   if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);

@@ -9,19 +9,37 @@ CommStats Comm::stats_{};
 Session::Session(int&, char**&) {}
 Session::~Session() = default;
 
-Comm Comm::world() { return Comm(0, 1); }
-bool Comm::mpi_enabled() { return false; }
+Comm Comm::world() {
+  return Comm(0, 1);
+}
+bool Comm::mpi_enabled() {
+  return false;
+}
 
-double Comm::sum(double v) const { return v; }
-double Comm::min(double v) const { return v; }
-double Comm::max(double v) const { return v; }
-std::int64_t Comm::sum(std::int64_t v) const { return v; }
-std::int64_t Comm::max(std::int64_t v) const { return v; }
-std::int64_t Comm::min(std::int64_t v) const { return v; }
+double Comm::sum(double v) const {
+  return v;
+}
+double Comm::min(double v) const {
+  return v;
+}
+double Comm::max(double v) const {
+  return v;
+}
+std::int64_t Comm::sum(std::int64_t v) const {
+  return v;
+}
+std::int64_t Comm::max(std::int64_t v) const {
+  return v;
+}
+std::int64_t Comm::min(std::int64_t v) const {
+  return v;
+}
 void Comm::sum(std::vector<std::int64_t>&) const {}
 void Comm::sum(std::vector<double>&) const {}
 void Comm::barrier() const {}
-std::string Comm::broadcast(const std::string& s, int) const { return s; }
+std::string Comm::broadcast(const std::string& s, int) const {
+  return s;
+}
 std::vector<std::vector<std::byte>> Comm::exchange(
     const std::vector<std::vector<std::byte>>& send) const {
   return send;

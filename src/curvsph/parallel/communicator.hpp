@@ -27,10 +27,10 @@ class Session {
 
 // Bytes exchanged and calls made, for the scaling study's communication model.
 struct CommStats {
-  double seconds = 0;       // wall time inside communication calls
-  long messages = 0;        // point-to-point messages with a non-empty payload (sent)
-  long collectives = 0;     // reductions, broadcasts, gathers
-  std::int64_t bytes = 0;   // payload bytes sent
+  double seconds = 0;      // wall time inside communication calls
+  long messages = 0;       // point-to-point messages with a non-empty payload (sent)
+  long collectives = 0;    // reductions, broadcasts, gathers
+  std::int64_t bytes = 0;  // payload bytes sent
 };
 
 class Comm {
@@ -55,7 +55,8 @@ class Comm {
   // Root's string on every rank.
   std::string broadcast(const std::string& s, int root) const;
   // Personalised all-to-all: send[r] goes to rank r; returns what each rank sent here.
-  std::vector<std::vector<std::byte>> exchange(const std::vector<std::vector<std::byte>>& send) const;
+  std::vector<std::vector<std::byte>> exchange(
+      const std::vector<std::vector<std::byte>>& send) const;
   // Concatenation of every rank's bytes on rank `root` (rank order); empty elsewhere.
   std::vector<std::byte> gather(const std::vector<std::byte>& mine, int root) const;
 

@@ -62,8 +62,8 @@ Real Decomposition<D>::distance_to_box(const Vec<D>& x, int rank) const {
 // particles' bounding box, the domain on periodic axes) and chooses the axis; `own` is the
 // ownership box (infinite outer sides on non-periodic axes).
 template <int D>
-void Decomposition<D>::split(std::vector<int>& node_of, const Particles<D>& P, int node,
-                             Box region, Box own, int rank_lo, int rank_hi) {
+void Decomposition<D>::split(std::vector<int>& node_of, const Particles<D>& P, int node, Box region,
+                             Box own, int rank_lo, int rank_hi) {
   if (rank_hi - rank_lo == 1) {
     tree_[static_cast<std::size_t>(node)].rank = rank_lo;
     boxes_[static_cast<std::size_t>(rank_lo)] = own;
@@ -91,8 +91,21 @@ void Decomposition<D>::split(std::vector<int>& node_of, const Particles<D>& P, i
     const Real c = Real(0.5) * (a + b);
     (count_below(c) < target ? a : b) = c;
   }
-  // b: the smallest tried position with at least the target below it.
-  const Real cut = b;
+  // Between b (the smallest tried position with the target below it) and its neighbours: the
+  // cut goes midway between the last particle below and the first above, so a lattice does
+  // not put a layer of particles on the cut itself.
+  Real below = -kInf, above = kInf;
+  for (Index i = 0; i < n; ++i) {
+    if (node_of[static_cast<std::size_t>(i)] != node) continue;
+    const Real x = P.x[i][axis];
+    if (x < b)
+      below = std::max(below, x);
+    else
+      above = std::min(above, x);
+  }
+  below = static_cast<Real>(comm_.max(static_cast<double>(below)));
+  above = static_cast<Real>(comm_.min(static_cast<double>(above)));
+  const Real cut = std::isfinite(below) && std::isfinite(above) ? Real(0.5) * (below + above) : b;
   Node& nd = tree_[static_cast<std::size_t>(node)];
   nd.axis = axis;
   nd.cut = cut;
@@ -277,7 +290,8 @@ Particles<D> Decomposition<D>::gather(const Particles<D>& P) const {
   Particles<D> all;
   if (!active()) {
     all = P;
-    all.for_each_field([&](const char*, auto& data) { data.resize(static_cast<std::size_t>(owned_)); });
+    all.for_each_field(
+        [&](const char*, auto& data) { data.resize(static_cast<std::size_t>(owned_)); });
     return all;
   }
   std::vector<Index> idx(static_cast<std::size_t>(owned_));
@@ -306,7 +320,8 @@ Particles<D> Decomposition<D>::gather(const Particles<D>& P) const {
   }
   std::vector<std::size_t> order(all.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return all.id[a] < all.id[b]; });
   all.permute(order);
   return all;
 }

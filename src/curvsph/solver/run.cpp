@@ -11,8 +11,8 @@
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
 #include "curvsph/io/pvtp.hpp"
-#include "curvsph/parallel/agree.hpp"
 #include "curvsph/io/vtk_writer.hpp"
+#include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
 #include "curvsph/solver/solver.hpp"
 
@@ -155,8 +155,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   }
   // [mpi] Totals over the ranks.
   const auto n_particles = static_cast<std::size_t>(solver.decomposition().global_count());
-  log("{} particles, dimension {}, dx = {}, h = {}, threads = {}, ranks = {}", n_particles, D,
-      c.dx, c.h(), omp_get_max_threads(), comm.size());
+  log("{} particles, dimension {}, dx = {}, h = {}, threads = {}, ranks = {}", n_particles, D, c.dx,
+      c.h(), omp_get_max_threads(), comm.size());
   if (const auto& rr = solver.relax_result())
     log("relaxation: {} steps in {:.2f} s, node-density spread {:.4g} -> {:.4g} (tolerance {})",
         rr->steps, rr->seconds, rr->spread_initial, rr->spread, c.relax.tolerance);

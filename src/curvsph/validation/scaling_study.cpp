@@ -43,14 +43,15 @@ nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
   cmd += fmt::format(
       "'{}' run '{}' -q --threads 1 --out '{}' --set resolution.dx={:.17g} --set "
       "time.max_steps={} --set time.end=100 > '{}' 2>&1",
-      self, (ctx.source_dir / "cases" / "periodic_box_3d.yaml").string(), out.string(),
-      1.0 / cells, steps, (out / "stdout.txt").string());
+      self, (ctx.source_dir / "cases" / "periodic_box_3d.yaml").string(), out.string(), 1.0 / cells,
+      steps, (out / "stdout.txt").string());
   fs::create_directories(out);
   setenv("OMP_WAIT_POLICY", "passive", 0);
   std::cerr << "scaling: " << ranks << " rank(s), " << cells << "^3 particles, " << steps
             << " steps\n";
   if (std::system(cmd.c_str()) != 0)
-    throw std::runtime_error("scaling: run failed: " + cmd + " (see " + (out / "stdout.txt").string() + ")");
+    throw std::runtime_error("scaling: run failed: " + cmd + " (see " +
+                             (out / "stdout.txt").string() + ")");
   std::ifstream in(out / "metrics.json");
   return nlohmann::json::parse(in);
 }
@@ -67,7 +68,7 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
       ctx.quick ? std::vector<std::pair<int, int>>{{1, 19}, {2, 24}, {4, 30}}
                 : std::vector<std::pair<int, int>>{{1, 37}, {2, 46}, {4, 58}};
   const std::vector<int> ranks = mpi ? std::vector<int>{1, 2, 4} : std::vector<int>{1};
-  const double h_over_dx = 1.3;  // the case's resolution.h_over_dx
+  const double h_over_dx = 1.3;          // the case's resolution.h_over_dx
   const double w_cells = 2 * h_over_dx;  // halo width (kernel support) in units of dx
 
   std::vector<Measured> runs;
@@ -77,22 +78,24 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     return nullptr;
   };
   for (int r : ranks)
-    runs.push_back({"strong", r, strong_cells,
-                    run_box(ctx, r, strong_cells, steps, ctx.out_dir / fmt::format("strong_np{}", r))});
+    runs.push_back(
+        {"strong", r, strong_cells,
+         run_box(ctx, r, strong_cells, steps, ctx.out_dir / fmt::format("strong_np{}", r))});
   for (const auto& [r, cells] : weak) {
     if (r > ranks.back()) continue;
     if (const Measured* m = find(r, cells)) {
       runs.push_back({"weak", r, cells, m->m});
       continue;
     }
-    runs.push_back({"weak", r, cells, run_box(ctx, r, cells, steps, ctx.out_dir / fmt::format("weak_np{}", r))});
+    runs.push_back({"weak", r, cells,
+                    run_box(ctx, r, cells, steps, ctx.out_dir / fmt::format("weak_np{}", r))});
   }
   // A measured halo point at ~1e6 particles per rank: 2 ranks, 126^3 = 2.0e6 particles,
   // one step (the halo count is geometry; the step only proves it runs).
   const int halo_cells = 126;
   if (mpi && !ctx.quick)
-    runs.push_back({"halo", 2, halo_cells,
-                    run_box(ctx, 2, halo_cells, 1, ctx.out_dir / "halo_np2")});
+    runs.push_back(
+        {"halo", 2, halo_cells, run_box(ctx, 2, halo_cells, 1, ctx.out_dir / "halo_np2")});
 
   // Table of the measurements, each with the model's halo fraction for its boxes.
   std::ofstream csv(ctx.out_dir / "scaling_measured.csv");
@@ -115,13 +118,14 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     model_f /= static_cast<double>(boxes.size());
     const double msgs = m.value("messages", 0.0) / (st * run.ranks);
     const double bytes = m.value("bytes_sent", 0.0) / (st * run.ranks);
-    csv << fmt::format("{},{},{},{},{:.6g},{:.6g},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.3f},{:.6g},{:.4f}\n",
-                       run.kind, run.ranks, n, st, pss, pss / run.ranks, loop, comm, comm / loop,
-                       m.value("halo_fraction", 0.0), model_f, msgs, bytes,
-                       m.value("load_imbalance", 1.0));
-    table += fmt::format("| {} | {} | {:.0f} | {:.4g} | {:.3f} | {:.4f} | {:.4f} | {:.2f} | {:.3f} |\n",
-                         run.kind, run.ranks, n, pss, comm / loop, m.value("halo_fraction", 0.0),
-                         model_f, msgs, m.value("load_imbalance", 1.0));
+    csv << fmt::format(
+        "{},{},{},{},{:.6g},{:.6g},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.3f},{:.6g},{:.4f}\n",
+        run.kind, run.ranks, n, st, pss, pss / run.ranks, loop, comm, comm / loop,
+        m.value("halo_fraction", 0.0), model_f, msgs, bytes, m.value("load_imbalance", 1.0));
+    table +=
+        fmt::format("| {} | {} | {:.0f} | {:.4g} | {:.3f} | {:.4f} | {:.4f} | {:.2f} | {:.3f} |\n",
+                    run.kind, run.ranks, n, pss, comm / loop, m.value("halo_fraction", 0.0),
+                    model_f, msgs, m.value("load_imbalance", 1.0));
     const std::string tag = fmt::format("{}_np{}", run.kind, run.ranks);
     res.metrics[tag + "_particle_steps_per_second"] = pss;
     res.metrics[tag + "_communication_share"] = comm / loop;
@@ -142,7 +146,8 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     eff_text += fmt::format("- strong-scaling efficiency on {} ranks: {:.3f}\n", r, e);
     if (r == 2)
       res.summary.push_back({"scaling.strong_efficiency_np2", e, ">= 0.8",
-                             fmt::format("{} particles, 1 thread per rank, vs 1 rank", s1->m["particles"].get<long>()),
+                             fmt::format("{} particles, 1 thread per rank, vs 1 rank",
+                                         s1->m["particles"].get<long>()),
                              e >= 0.8});
   }
   for (const auto& [r, cells] : weak) {
@@ -152,8 +157,9 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     const double e = (wr->m["particle_steps_per_second"].get<double>() / r) /
                      w1->m["particle_steps_per_second"].get<double>();
     res.metrics[fmt::format("weak_efficiency_np{}", r)] = e;
-    eff_text += fmt::format("- weak-scaling efficiency on {} ranks (~{:.0f} particles per rank): {:.3f}\n", r,
-                            wr->m["particles"].get<double>() / r, e);
+    eff_text +=
+        fmt::format("- weak-scaling efficiency on {} ranks (~{:.0f} particles per rank): {:.3f}\n",
+                    r, wr->m["particles"].get<double>() / r, e);
   }
 
   // The model, fitted to the measurements: rate from 1 rank, exchanges per step from the
@@ -175,7 +181,7 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     model.exchanges = big->m["messages"].get<double>() / (st * ranks.back() * nb);
     model.bytes_per_halo = big->m["bytes_sent"].get<double>() / (st * ranks.back()) / (f * n_rank);
   } else {
-    model.exchanges = 3;       // halo build, refresh, migration (as coded) when unmeasured
+    model.exchanges = 3;  // halo build, refresh, migration (as coded) when unmeasured
     model.bytes_per_halo = 136;
   }
   res.metrics["model_rate"] = model.rate;
@@ -207,7 +213,8 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
       const double e = t.compute / t.total(), el = tl.compute / tl.total();
       mcsv << fmt::format("{:.0f},{},{:.5f},{:.1f},{:.6g},{:.6g},{:.6g},{:.4f},{:.4f}\n", n, P, f,
                           nb, t.compute, t.halo_compute, t.communication, e, el);
-      mtable += fmt::format("| {:.0e} | {} | {:.4f} | {:.1f} | {:.3f} | {:.3f} |\n", n, P, f, nb, e, el);
+      mtable +=
+          fmt::format("| {:.0e} | {} | {:.4f} | {:.1f} | {:.3f} | {:.3f} |\n", n, P, f, nb, e, el);
       if (P == 64 || P == 1024) res.metrics[fmt::format("model_efficiency_n{:.0e}_np{}", n, P)] = e;
     }
   }
@@ -216,17 +223,19 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
   const double cube_f = scaling::cube_halo_fraction(1e6, 1.0, w_cells);
   res.metrics["model_cube_halo_fraction_1e6"] = cube_f;
   res.summary.push_back({"scaling.halo_fraction_cube_1e6_model", cube_f, "<= 0.15",
-                         "cube sub-domain of 1e6 particles, halo width 2h = 2.6 dx", cube_f <= 0.15});
+                         "cube sub-domain of 1e6 particles, halo width 2h = 2.6 dx",
+                         cube_f <= 0.15});
   if (const Measured* hp = find(2, halo_cells)) {
     const double f = hp->m["halo_fraction"].get<double>();
     const auto boxes = scaling::orb_boxes(2, 1.0);
     const double fm = scaling::halo_fraction(boxes[0], w_cells / halo_cells);
     res.metrics["measured_halo_fraction_1e6_per_rank_slab"] = f;
     res.metrics["model_halo_fraction_1e6_per_rank_slab"] = fm;
-    res.summary.push_back({"scaling.halo_fraction_1e6_measured", f, "<= 0.15",
-                           fmt::format("2 ranks x {:.3g} particles (slab sub-domains, 2 cut faces); model {:.4f}",
-                                       hp->m["particles"].get<double>() / 2, fm),
-                           f <= 0.15});
+    res.summary.push_back(
+        {"scaling.halo_fraction_1e6_measured", f, "<= 0.15",
+         fmt::format("2 ranks x {:.3g} particles (slab sub-domains, 2 cut faces); model {:.4f}",
+                     hp->m["particles"].get<double>() / 2, fm),
+         f <= 0.15});
   }
 
   run_plot_script(ctx, "plot_scaling.py", {ctx.out_dir.string()});
@@ -234,7 +243,8 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
   md << "# MPI scaling: strong, weak, communication, halo model\n\n"
      << "Case `cases/periodic_box_3d.yaml` (3-D periodic box, summation density, h = 1.3 dx, "
         "halo width 2h), "
-     << steps << " steps per run, one OpenMP thread per rank (`mpirun --oversubscribe -np N -x "
+     << steps
+     << " steps per run, one OpenMP thread per rank (`mpirun --oversubscribe -np N -x "
         "OMP_NUM_THREADS=1`). The machine these figures come from has 2 cores shared with other "
         "work: 4 ranks are oversubscribed, and every timing depends on the load at the time "
         "(see the note beside the figures). Regenerate with `build/curvsph validate scaling`.\n\n"
@@ -249,8 +259,7 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
         "with the passes running over owned and halo particles (f: halo fraction of the ORB "
         "box), r = "
      << fmt::format("{:.4g}", model.rate)
-     << " particle-steps/s (1 rank, measured), e = "
-     << fmt::format("{:.2f}", model.exchanges)
+     << " particle-steps/s (1 rank, measured), e = " << fmt::format("{:.2f}", model.exchanges)
      << " exchanges per step and b = " << fmt::format("{:.1f}", model.bytes_per_halo)
      << " bytes per halo particle per step (both measured on the largest run), k neighbour "
         "ranks (from the boxes), the P - 1 latencies of the MPI_Alltoall of message sizes "
@@ -258,9 +267,10 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
         "exchange would), and assumed network figures alpha = 2 us, beta = 10 GB/s. Weak "
         "scaling: particles per rank fixed.\n\n"
      << mtable << "\n"
-     << fmt::format("Cube sub-domain of 1e6 particles: halo fraction {:.4f} (6 w/a + 3 pi (w/a)^2 + "
-                    "4 pi/3 (w/a)^3, a = 100 dx, w = 2.6 dx).\n\n",
-                    cube_f)
+     << fmt::format(
+            "Cube sub-domain of 1e6 particles: halo fraction {:.4f} (6 w/a + 3 pi (w/a)^2 + "
+            "4 pi/3 (w/a)^3, a = 100 dx, w = 2.6 dx).\n\n",
+            cube_f)
      << "![scaling](scaling.png)\n\n"
      << summary_markdown(res.summary);
   return res;

@@ -22,7 +22,9 @@ for kind, marker in (("strong", "o-"), ("weak", "s--")):
     pss = [float(r["particle_steps_per_second"]) for r in rows]
     a1.plot(ranks, pss, marker, label=f"{kind} (measured)")
     if kind == "strong":
-        a1.plot(ranks, [pss[0] * r for r in ranks], ":", color="gray", label="ideal (strong)")
+        cores = os.cpu_count() or 1
+        a1.plot(ranks, [pss[0] * min(r, cores) for r in ranks], ":", color="gray",
+                label=f"ideal on {cores} cores (strong)")
 a1.set_xlabel("ranks (1 OpenMP thread each; 2 cores, oversubscribed beyond 2)")
 a1.set_ylabel("particle-steps / s")
 a1.set_xticks([1, 2, 4])

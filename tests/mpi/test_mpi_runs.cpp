@@ -134,6 +134,17 @@ TEST_F(MpiRun, CouetteSameParticlesOn1And2And4Ranks) {
                    1e-12);
 }
 
+// Re-bisecting at every step (any imbalance above 1e-9) moves particles between ranks all
+// the time; the result must still equal the 1-rank run.
+TEST_F(MpiRun, CouetteRebalancingEveryStepStillSame) {
+  same_on_1_2_4<2>(kCases +
+                       "couette.yaml --set resolution.dx=1e-3 --set time.max_steps=10 "
+                       "--set output.every=100 --set parallel.rebalance_imbalance=1e-9",
+                   1e-12);
+  const auto m = nlohmann::json::parse(read(dir_ / "np4" / "metrics.json"));
+  EXPECT_GE(m["rebalances"].get<long>(), 5) << "the re-balance path was not exercised";
+}
+
 TEST_F(MpiRun, BadInputStopsEveryRankWithOneMessage) {
   const int rc = run_ranks(2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
                                   " --set walls.0.radius=-0.01");

@@ -56,10 +56,20 @@ nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
   return nlohmann::json::parse(in);
 }
 
+// The 1-minute load average (/proc/loadavg): the timings mean little without it on a shared
+// machine. -1 where unavailable.
+double load_average() {
+  std::ifstream in("/proc/loadavg");
+  double l = -1;
+  in >> l;
+  return l;
+}
+
 }  // namespace
 
 StudyResult run_scaling_study(const StudyContext& ctx) {
   fs::create_directories(ctx.out_dir);
+  const double load_start = load_average();
   const bool mpi = mpi::Comm::mpi_enabled();
   const int steps = ctx.quick ? 3 : 10;
   const int strong_cells = ctx.quick ? 30 : 58;  // 58^3 = 195112 ~ 2e5 particles
@@ -238,6 +248,10 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
          f <= 0.15});
   }
 
+  const double load_end = load_average();
+  res.metrics["load_average_start"] = load_start;
+  res.metrics["load_average_end"] = load_end;
+  res.metrics["cores"] = static_cast<double>(sysconf(_SC_NPROCESSORS_ONLN));
   run_plot_script(ctx, "plot_scaling.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# MPI scaling: strong, weak, communication, halo model\n\n"
@@ -247,11 +261,17 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
      << " steps per run, one OpenMP thread per rank (`mpirun --oversubscribe -np N -x "
         "OMP_NUM_THREADS=1`). The machine these figures come from has 2 cores shared with other "
         "work: 4 ranks are oversubscribed, and every timing depends on the load at the time "
-        "(see the note beside the figures). Regenerate with `build/curvsph validate scaling`.\n\n"
+        "(load figures below). Regenerate with `build/curvsph validate scaling`.\n\n"
      << "Communication share: wall time inside MPI calls (waiting for the slowest rank "
         "included) over the time-step loop, slowest rank. Halo (measured): halo copies per "
         "owned particle, averaged over ranks and steps; halo (model): the Minkowski-sum volume "
         "of analysis/scaling_model.hpp for the same ORB boxes.\n\n"
+     << fmt::format(
+            "Load average (1 min) at the start {:.2f} and at the end {:.2f} on {} cores: "
+            "above the core count the ranks share cores with other processes and the "
+            "rates and efficiencies below measure the machine's contention as much as "
+            "the code.\n\n",
+            load_start, load_end, sysconf(_SC_NPROCESSORS_ONLN))
      << table << "\n"
      << eff_text << "\n"
      << "## Model\n\n"

@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 PYTHON ?= /usr/bin/python3
 
-.PHONY: all deps configure build demo test bench validate format tidy clean
+.PHONY: all deps configure build demo demo-mpi test bench validate format tidy clean
 
 all: build
 
@@ -22,6 +22,10 @@ build: configure
 
 demo: build
 	scripts/demo
+
+# The same solver on 2 MPI ranks (issue 8).
+demo-mpi: build
+	scripts/demo-mpi
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600

@@ -5,6 +5,7 @@
 
 #include "curvsph/app/command.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/run.hpp"
 
 namespace curvsph::app {
@@ -32,13 +33,16 @@ const CommandRegistration reg{Command{
           ->check(CLI::NonNegativeNumber);
       sub.add_flag("--quiet,-q", args->quiet, "no progress line");
       return [args] {
-        const Case c = read_case(args->case_file, args->sets);
+        // [mpi] every rank reads the case; a failure on any stops all with its message.
+        const mpi::Comm comm = mpi::Comm::world();
+        Case c;
+        mpi::agree_on_input(comm, [&] { c = read_case(args->case_file, args->sets); });
         RunOptions o;
         o.out_dir = args->out;
         o.threads = args->threads;
         o.progress = !args->quiet;
         const auto m = run_case(c, o);
-        std::cout << m.dump(2) << std::endl;
+        if (comm.root()) std::cout << m.dump(2) << std::endl;
         return 0;
       };
     },

@@ -5,6 +5,7 @@
 
 #include "curvsph/app/command.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/parallel/communicator.hpp"
 
 namespace curvsph::app {
 std::vector<Command>& command_registry() {
@@ -15,6 +16,10 @@ std::vector<Command>& command_registry() {
 
 int main(int argc, char** argv) {
   using namespace curvsph;
+  // MPI for the whole program (a no-op without MPI); under mpirun every rank runs main and
+  // errors, which the ranks raise together (parallel/agree.hpp), are printed by rank 0.
+  mpi::Session mpi_session(argc, argv);
+  const bool speaker = mpi::Comm::world().root();
   CLI::App cli{
       "curvsph — SPH with accurate walls of curved shape (ghosts, density-preserving map, "
       "boundary integrals)"};
@@ -38,10 +43,10 @@ int main(int argc, char** argv) {
   try {
     return action ? action() : 0;
   } catch (const InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    if (speaker) std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
   } catch (const InstabilityError& e) {
-    std::cerr << "unstable: " << e.what() << "\n";
+    if (speaker) std::cerr << "unstable: " << e.what() << "\n";
     return kExitInstability;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -52,6 +52,11 @@ class BoundaryModel {
   virtual void add_accelerations(Particles<D>& P) = 0;
   // Indices of fluid particles found on the wrong side of a wall by the last prepare().
   virtual const std::vector<Index>& penetrated() const = 0;
+  // How far, in kernel supports, the model reads fluid particles around an owned particle:
+  // the MPI halo must reach that far (issue 8). Ghosts of particles behind a convex wall can
+  // lie closer to a particle than their source does; wall elements interpolate the wall
+  // pressure from fluid within one support of the element, itself within one support.
+  virtual Real halo_reach() const { return 1; }
   // Extra particles (ghosts, wall elements) for output; may be empty.
   virtual void append_output(std::vector<Vec<D>>& /*x*/, std::vector<int>& /*kind*/) const {}
 };

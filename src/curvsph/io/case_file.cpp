@@ -222,7 +222,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   const Keys top(root, file, "");
   top.allow({"name", "dimension", "resolution", "domain", "fluids", "eos", "density", "gravity",
              "forcing", "walls", "boundary", "setup", "time", "output", "probes", "analysis",
-             "initial", "surface_tension"});
+             "initial", "surface_tension", "parallel"});
   c.name = top.text("name", path.stem().string());
   const long dim = top.integer("dimension");
   if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
@@ -374,6 +374,12 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.dt_max = time.non_negative("dt_max", 0.0);
   c.max_steps = time.integer("max_steps", 0);
   if (c.max_steps < 0) time.fail(time.key("max_steps"), "must be >= 0");
+
+  // MPI domain decomposition (issue 8); ignored on one rank.
+  const Keys par = top.sub("parallel");
+  par.allow({"rebalance_imbalance", "check_conservation"});
+  c.rebalance_imbalance = par.positive("rebalance_imbalance", 0.1);
+  c.check_conservation = par.boolean("check_conservation", false);
 
   const Keys out = top.sub("output");
   out.allow({"every", "probe_every", "vtk"});

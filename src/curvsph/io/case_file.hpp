@@ -106,6 +106,11 @@ struct Case {
   double output_every = 0;  // 0: only first and last
   double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
+  // parallel: MPI domain decomposition. Re-bisect when the largest rank owns more than
+  // (1 + rebalance_imbalance) times the mean; check_conservation sums count, mass and ids
+  // over the ranks after every migration (metrics: conservation_*).
+  double rebalance_imbalance = 0.1;
+  bool check_conservation = false;
   std::vector<ProbeSpec> probes;
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.
   std::string initial_field;

@@ -10,7 +10,9 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
+#include "curvsph/io/pvtp.hpp"
 #include "curvsph/io/vtk_writer.hpp"
+#include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
 #include "curvsph/solver/solver.hpp"
 
@@ -37,72 +39,170 @@ class RunLog {
   std::ofstream out_;
 };
 
+// ranks, load_imbalance, halo_fraction and the communication counters (issue 8); on one
+// rank: 1, 1, 0 and zeros.
+template <int D>
+void add_decomposition_metrics(const Decomposition<D>& dec, nlohmann::json& m) {
+  const mpi::Comm& comm = dec.comm();
+  const DecompositionStats& s = dec.stats();
+  m["ranks"] = comm.size();
+  // Max over mean owned count, averaged over the migrations (after each, before any
+  // re-balance it triggers), and its largest value.
+  m["load_imbalance"] = s.migrations ? s.imbalance_sum / static_cast<double>(s.migrations) : 1.0;
+  m["load_imbalance_max"] = s.imbalance_max;
+  m["rebalances"] = s.rebalances;
+  // Halo copies per owned particle, summed over ranks and steps.
+  const double halo = comm.sum(s.halo_sum), owned = comm.sum(s.owned_sum);
+  m["halo_fraction"] = owned > 0 ? halo / owned : 0.0;
+  m["seconds_communication"] = comm.max(comm.stats().seconds);
+  m["seconds_decomposition"] = comm.max(s.seconds);
+  m["messages"] = comm.sum(static_cast<std::int64_t>(comm.stats().messages));
+  m["bytes_sent"] = comm.sum(comm.stats().bytes);
+  if (s.conservation_checks > 0) {
+    m["conservation_checks"] = s.conservation_checks;
+    m["conservation_count_error_max"] = s.count_error_max;
+    m["conservation_id_error_max"] = s.id_error_max;
+    m["conservation_mass_rel_error_max"] = s.mass_rel_error_max;
+  }
+}
+
+// The owned particles of this rank (the solver's arrays may carry halo copies behind them).
+template <int D>
+Particles<D> owned_part(const Solver<D>& s) {
+  Particles<D> p = s.particles();
+  const auto n = static_cast<std::size_t>(s.decomposition().owned());
+  p.for_each_field([&](const char*, auto& data) { data.resize(n); });
+  return p;
+}
+
 template <int D>
 nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   const auto wall_start = std::chrono::steady_clock::now();
+  const mpi::Comm comm = mpi::Comm::world();
+  const bool parallel = comm.size() > 1;
+  // [mpi] Rank 0 writes the shared files (log, series, probes, metrics); every rank writes
+  // its own piece of each snapshot.
+  const bool writer = o.write_files && comm.root();
   if (o.write_files) fs::create_directories(o.out_dir);
-  RunLog log(o.out_dir / "log.txt", o.write_files);
+  RunLog log(o.out_dir / "log.txt", writer);
   log("curvsph run: case '{}' from {}", c.name, c.file_name());
 
-  Solver<D> solver(c);
-  try {
-    solver.initialize();
-  } catch (const InstabilityError& e) {
-    // The initial state is already bad (e.g. an initial pressure field the EOS maps outside
-    // [0.5, 2] rho0): leave the snapshot DESIGN.md §3 promises, as for a later step.
-    log("UNSTABLE: {}", e.what());
-    if (o.write_files && c.write_vtk)
-      io::write_vtp(o.out_dir / "particles_unstable.vtp", solver.particles());
-    throw;
-  }
-  const auto& P = solver.particles();
-  log("{} particles, dimension {}, dx = {}, h = {}, threads = {}", P.size(), D, c.dx, c.h(),
-      omp_get_max_threads());
-  if (const auto& rr = solver.relax_result())
-    log("relaxation: {} steps in {:.2f} s, node-density spread {:.4g} -> {:.4g} (tolerance {})",
-        rr->steps, rr->seconds, rr->spread_initial, rr->spread, c.relax.tolerance);
-
+  // Set-up reads the rest of the case (walls, analyses, probes): an error found on any rank
+  // stops every rank with the same message before the first collective step.
+  std::unique_ptr<Solver<D>> solver_ptr;
   std::vector<std::unique_ptr<Analysis<D>>> analyses;
-  if (const YAML::Node an = c.root["analysis"]; an && an.IsMap())
-    for (const auto& kv : an)
-      analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
+  mpi::agree_on_input(comm, [&] {
+    solver_ptr = std::make_unique<Solver<D>>(c);
+    if (const YAML::Node an = c.root["analysis"]; an && an.IsMap())
+      for (const auto& kv : an)
+        analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
+  });
+  Solver<D>& solver = *solver_ptr;
 
   io::PvdSeries series(o.out_dir / "series.pvd");
+<<<<<<< HEAD
   std::unique_ptr<ProbeWriter<D>> probes;
   if (o.write_files && !c.probes.empty())
     probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
                                               static_cast<Real>(c.dx),
                                               c.gravity.head<D>().template cast<Real>());
+=======
+>>>>>>> mpi
   int snapshot = 0;
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || !c.write_vtk) return;
     const auto t0 = std::chrono::steady_clock::now();
     const int index = snapshot;
     const std::string file = name.empty() ? fmt::format("particles_{:06d}.vtp", snapshot++) : name;
-    io::write_vtp(o.out_dir / file, solver.particles());
-    series.add(solver.time(), file);
+    // One block: the .vtp on one rank; with MPI a .pvtp naming one .vtp per rank.
+    auto write_block = [&](const io::VtkPolyData& poly, const std::string& f, int part) {
+      if (!parallel) {
+        poly.write(o.out_dir / f);
+        series.add(solver.time(), f, part);
+        return;
+      }
+      const std::string stem = fs::path(f).stem().string();
+      poly.write(o.out_dir / fmt::format("{}_r{}.vtp", stem, comm.rank()));
+      if (!comm.root()) return;
+      std::vector<std::string> pieces;
+      for (int r = 0; r < comm.size(); ++r) pieces.push_back(fmt::format("{}_r{}.vtp", stem, r));
+      io::write_pvtp(o.out_dir / (stem + ".pvtp"), poly, pieces);
+      series.add(solver.time(), stem + ".pvtp", part);
+    };
+    write_block(io::VtkPolyData::from_particles(parallel ? owned_part(solver) : solver.particles()),
+                file, 0);
     // Ghosts / wall elements as a second block of the series (kind: 1 ghost, 2 element).
+    // With MPI a rank's piece also holds the ghosts of its halo copies.
     if (const auto* b = solver.boundary()) {
       std::vector<Vec<D>> bx;
       std::vector<int> kind;
       b->append_output(bx, kind);
-      if (!bx.empty()) {
+      const bool any = parallel ? comm.sum(static_cast<std::int64_t>(bx.size())) > 0 : !bx.empty();
+      if (any) {
         io::VtkPolyData poly;
         poly.set_points(bx);
         poly.add_scalar("kind", std::vector<std::int32_t>(kind.begin(), kind.end()));
         const std::string bfile =
             name.empty() ? fmt::format("boundary_{:06d}.vtp", index) : "boundary_" + name;
-        poly.write(o.out_dir / bfile);
-        series.add(solver.time(), bfile, 1);
+        write_block(poly, bfile, 1);
       }
     }
     solver.phase_times().output +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
+
+  try {
+    solver.initialize();
+  } catch (const InstabilityError& e) {
+    // The initial state is already bad (e.g. an initial pressure field the EOS maps outside
+    // [0.5, 2] rho0): leave the snapshot DESIGN.md §3 promises, as for a later step.
+    log("UNSTABLE: {}", e.what());
+    write_snapshot("particles_unstable.vtp");
+    throw;
+  }
+  // [mpi] Totals over the ranks.
+  const auto n_particles = static_cast<std::size_t>(solver.decomposition().global_count());
+  log("{} particles, dimension {}, dx = {}, h = {}, threads = {}, ranks = {}", n_particles, D, c.dx,
+      c.h(), omp_get_max_threads(), comm.size());
+  if (const auto& rr = solver.relax_result())
+    log("relaxation: {} steps in {:.2f} s, node-density spread {:.4g} -> {:.4g} (tolerance {})",
+        rr->steps, rr->seconds, rr->spread_initial, rr->spread, c.relax.tolerance);
+
+  std::unique_ptr<ProbeWriter<D>> probes;
+  if (writer && !c.probes.empty())
+    probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
+                                              static_cast<Real>(c.dx));
+  const bool any_probes = o.write_files && !c.probes.empty();
+  // [mpi] Probes and analyses see every particle: with MPI the owned particles are gathered
+  // on rank 0 at probe and output times (not scalable beyond one node's memory; fine for
+  // the sizes these figures are computed at).
+  CellList<D> gathered_cells;
+  gathered_cells.configure(solver.cells().support(), c.domain_min, c.domain_max, c.periodic);
+  auto write_probes = [&](double t) {
+    if (!parallel) {
+      if (probes) probes->write_row(t, solver.particles(), solver.cells(), solver.kernel());
+      return;
+    }
+    const Particles<D> all = solver.decomposition().gather(solver.particles());
+    if (!probes) return;
+    gathered_cells.build(all.x);
+    probes->write_row(t, all, gathered_cells, solver.kernel());
+  };
+  // Runs f(particles) on the view of every particle: this rank's on one rank, the gathered
+  // set on rank 0 with MPI (the other ranks only take part in the gather).
+  auto with_all = [&](auto&& f) {
+    if (!parallel) return f(solver.particles());
+    const Particles<D> all = solver.decomposition().gather(solver.particles());
+    if (comm.root()) return f(all);
+    return decltype(f(all))();
+  };
   double last_observed_time = -1;
   auto observe = [&] {
-    for (auto& a : analyses) a->observe(solver.time(), solver.particles());
+    if (!analyses.empty())
+      with_all([&](const Particles<D>& all) {
+        for (auto& a : analyses) a->observe(solver.time(), all);
+      });
     last_observed_time = solver.time();
   };
 
@@ -112,10 +212,10 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const double probe_every = c.probe_every > 0 ? c.probe_every : out_every;
   double next_out = out_every, next_probe = probe_every;
   write_snapshot("");
-  if (probes) probes->write_row(0, solver.particles(), solver.cells(), solver.kernel());
+  if (any_probes) write_probes(0);
   observe();
 
-  Progress progress(o.progress, t_end, P.size());
+  Progress progress(o.progress && comm.root(), t_end, n_particles);
   const auto loop_start = std::chrono::steady_clock::now();
   bool unstable = false;
   try {
@@ -124,9 +224,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       const double cap = std::min({t_end - t, next_out - t, next_probe - t});
       solver.step(static_cast<Real>(cap));
       const double tn = solver.time();
-      if (probes && tn >= next_probe - eps) {
-        probes->write_row(tn, solver.particles(), solver.cells(), solver.kernel());
-      }
+      if (any_probes && tn >= next_probe - eps) write_probes(tn);
       while (next_probe <= tn + eps) next_probe += probe_every;
       if (tn >= next_out - eps) {
         write_snapshot("");
@@ -141,25 +239,30 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     log("UNSTABLE: {}", e.what());
     write_snapshot("particles_unstable.vtp");
     bool absorbed = false;
-    for (auto& a : analyses)
-      absorbed |= a->absorb_instability(solver.time(), solver.particles(), e);
+    if (!analyses.empty())
+      with_all([&](const Particles<D>& all) {
+        for (auto& a : analyses) absorbed |= a->absorb_instability(solver.time(), all, e);
+      });
+    // [mpi] rank 0 decides for every rank (only it ran the analyses).
+    if (parallel) absorbed = comm.max(static_cast<std::int64_t>(absorbed)) > 0;
     if (!absorbed) {
       // The analyses still report the state the run reached (a study plots a failed run up to
       // its failure): metrics_unstable.json (metrics.json stays the mark of a finished run),
       // then exit 3 as before.
-      if (o.write_files) {
-        nlohmann::json m;
-        m["particles"] = P.size();
-        m["steps"] = solver.steps();
-        m["threads"] = omp_get_max_threads();
-        m["time_reached"] = solver.time();
-        m["wall_seconds"] =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-        m["unstable"] = true;
-        m["unstable_message"] = e.what();
-        for (auto& a : analyses) a->finish(solver.time(), solver.particles(), m, o.out_dir);
-        std::ofstream(o.out_dir / "metrics_unstable.json") << m.dump(2) << '\n';
-      }
+      nlohmann::json m;
+      m["particles"] = n_particles;
+      m["steps"] = solver.steps();
+      m["threads"] = omp_get_max_threads();
+      m["ranks"] = comm.size();
+      m["time_reached"] = solver.time();
+      m["wall_seconds"] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      m["unstable"] = true;
+      m["unstable_message"] = e.what();
+      with_all([&](const Particles<D>& all) {
+        for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
+      });
+      if (writer) std::ofstream(o.out_dir / "metrics_unstable.json") << m.dump(2) << '\n';
       throw;
     }
     unstable = true;
@@ -181,12 +284,13 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
   nlohmann::json m;
-  m["particles"] = P.size();
+  m["particles"] = n_particles;
   m["steps"] = solver.steps();
   m["threads"] = omp_get_max_threads();
   m["wall_seconds"] = wall;
   m["particle_steps_per_second"] =
-      loop_seconds > 0 ? static_cast<double>(P.size()) * solver.steps() / loop_seconds : 0.0;
+      loop_seconds > 0 ? static_cast<double>(n_particles) * solver.steps() / loop_seconds : 0.0;
+  add_decomposition_metrics(solver.decomposition(), m);
   m["time_reached"] = solver.time();
   m["unstable"] = unstable ? 1 : 0;
   if (const auto& rr = solver.relax_result()) {
@@ -195,17 +299,18 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     m["relax_node_density_spread_initial"] = rr->spread_initial;
     m["relax_seconds"] = rr->seconds;
   }
+  // [mpi] Phase times of the slowest rank (the others wait for it).
   const auto& pt = solver.phase_times();
-  m["seconds_neighbors"] = pt.neighbors;
-  m["seconds_boundary"] = pt.boundary;
-  m["seconds_density"] = pt.density;
-  m["seconds_forces"] = pt.forces;
-  m["seconds_integrate"] = pt.integrate;
-  m["seconds_output"] = pt.output;
-  for (auto& a : analyses)
-    a->finish(solver.time(), solver.particles(), m,
-              o.write_files ? o.out_dir : std::filesystem::path());
-  if (o.write_files) {
+  m["seconds_neighbors"] = comm.max(pt.neighbors);
+  m["seconds_boundary"] = comm.max(pt.boundary);
+  m["seconds_density"] = comm.max(pt.density);
+  m["seconds_forces"] = comm.max(pt.forces);
+  m["seconds_integrate"] = comm.max(pt.integrate);
+  m["seconds_output"] = comm.max(pt.output);
+  with_all([&](const Particles<D>& all) {
+    for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
+  });
+  if (writer) {
     std::ofstream(o.out_dir / "metrics.json") << m.dump(2) << '\n';
     log("done: {} steps in {:.2f} s", solver.steps(), wall);
   }

@@ -9,6 +9,7 @@
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
+#include "curvsph/parallel/agree.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
@@ -69,6 +70,17 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (!c.initial_field.empty()) apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
   boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
   if (boundary_) boundary_->check_setup(P_, c.file_name());
+
+  // [mpi] The halo reaches as far as any pass reads neighbours (kernel support, more where
+  // the boundary model reads further).
+  DecompositionOptions dop;
+  dop.halo_width = W_.support * (boundary_ ? boundary_->halo_reach() : Real(1));
+  dop.rebalance_imbalance = c.rebalance_imbalance;
+  dop.check_conservation = c.check_conservation;
+  dop.domain_min = c.domain_min;
+  dop.domain_max = c.domain_max;
+  dop.periodic = c.periodic;
+  decomp_.configure(dop);
 }
 
 template <int D>
@@ -84,6 +96,8 @@ void Solver<D>::resort() {
   Stopwatch sw{times_.neighbors};
   const auto& s = cells_.sorted();
   order_.assign(s.begin(), s.end());
+  // [mpi] The build may have indexed halo copies, dropped since (indices >= size()).
+  std::erase_if(order_, [n = P_.size()](std::size_t k) { return k >= n; });
   P_.permute(order_);
 }
 
@@ -92,14 +106,20 @@ void Solver<D>::compute_rates(Real dt_rho) {
   if (boundary_) {
     Stopwatch sw{times_.boundary};
     boundary_->prepare(P_, t_);
-    if (!boundary_->penetrated().empty()) {
-      const Index i = boundary_->penetrated().front();
-      throw InstabilityError(
+    // Owned particles only: a halo copy that went through a wall is its owner's report.
+    std::vector<Index> through;
+    for (const Index i : boundary_->penetrated())
+      if (i < decomp_.owned()) through.push_back(i);
+    std::optional<InstabilityError> err;
+    if (!through.empty()) {
+      const Index i = through.front();
+      err.emplace(
           fmt::format("step {}, t = {:.6g}: particle {} went through a wall ({} particles did)",
-                      steps_, t_, P_.id[i], boundary_->penetrated().size()),
+                      steps_, t_, P_.id[i], through.size()),
           steps_, static_cast<long>(P_.id[i]), InstabilityError::Kind::penetration,
-          static_cast<long>(boundary_->penetrated().size()));
+          static_cast<long>(through.size()));
     }
+    mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
   }
   {
     Stopwatch sw{times_.density};
@@ -109,7 +129,10 @@ void Solver<D>::compute_rates(Real dt_rho) {
       // density rate lagging half a step amplifies sound waves every step).
       if (dt_rho > 0) {
         const bool delta = F_.delta_sph > 0;
-        if (delta) renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+        if (delta) {
+          renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+          decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
+        }
         continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
                         delta ? &grad_rho_ : nullptr);
         if (boundary_) boundary_->add_density_rate(P_);
@@ -121,6 +144,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
       if (boundary_) boundary_->add_density(P_);
     }
     update_pressure(P_, F_);
+    decomp_.refresh(P_);  // [mpi] halo density, sigma, pressure from their owners
   }
   {
     Stopwatch sw{times_.forces};
@@ -141,8 +165,10 @@ void Solver<D>::compute_rates(Real dt_rho) {
 
 template <int D>
 void Solver<D>::initialize() {
+  decomp_.distribute(P_);  // [mpi] keep this rank's sub-domain
   build_neighbors();
   resort();
+  decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
   compute_rates(0);
   check_state();
@@ -150,7 +176,7 @@ void Solver<D>::initialize() {
 
 template <int D>
 Real Solver<D>::stable_dt() const {
-  const Index n = static_cast<Index>(P_.size());
+  const Index n = decomp_.owned();
   const Real vmax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.v[i].squaredNorm(); }));
   const Real amax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.a[i].squaredNorm(); }));
   const Real h = W_.h;
@@ -159,11 +185,12 @@ Real Solver<D>::stable_dt() const {
   if (nu_max_ > 0) dt = std::min(dt, Real(0.125) * h * h / nu_max_);  // viscous (Morris 1997)
   if (amax > 0) dt = std::min(dt, Real(0.25) * std::sqrt(h / amax));  // force (Monaghan 1992)
   if (case_.dt_max > 0) dt = std::min(dt, static_cast<Real>(case_.dt_max));
-  return dt;
+  return static_cast<Real>(decomp_.comm().min(static_cast<double>(dt)));  // [mpi]
 }
 
 template <int D>
 void Solver<D>::step(Real dt_cap) {
+  decomp_.drop_halo(P_);  // [mpi] integrate owned particles only
   if (steps_ > 0 && steps_ % kResortEvery == 0) resort();
   dt_ = std::min(stable_dt(), dt_cap);
   const Real half = dt_ / 2;
@@ -177,13 +204,16 @@ void Solver<D>::step(Real dt_cap) {
       cells_.wrap(P_.x[i]);
     });
   }
+  decomp_.migrate(P_);        // [mpi] to the new owners, re-bisecting when unbalanced
+  decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
   compute_rates(dt_);
   {
     Stopwatch sw{times_.integrate};
-    parallel_for(n, [&](Index i) { P_.v[i] += half * P_.a[i]; });
+    parallel_for(static_cast<Index>(P_.size()), [&](Index i) { P_.v[i] += half * P_.a[i]; });
   }
   if (case_.shifting > 0) {
+    decomp_.update_halo(P_.v);  // [mpi] the kick above is right for owned particles only
     Stopwatch sw{times_.integrate};
     shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
                     shift_, shift_drho_, shift_dv_);
@@ -195,19 +225,22 @@ void Solver<D>::step(Real dt_cap) {
 
 template <int D>
 void Solver<D>::check_state() const {
-  const Index n = static_cast<Index>(P_.size());
+  const Index n = decomp_.owned();
+  std::optional<InstabilityError> err;
   for (Index i = 0; i < n; ++i) {
     const Real rho0 = F_.rho0[P_.phase[i]];
     const bool finite = P_.x[i].allFinite() && P_.v[i].allFinite() && std::isfinite(P_.rho[i]);
     if (!finite || P_.rho[i] < Real(0.5) * rho0 || P_.rho[i] > 2 * rho0) {
-      throw InstabilityError(
+      err.emplace(
           fmt::format("step {}, t = {:.6g}: particle {} has {} (rho = {:.6g}, rho0 = {:.6g}, "
                       "|v| = {:.6g})",
                       steps_, t_, P_.id[i], finite ? "density out of [0.5, 2] rho0" : "NaN/Inf",
                       P_.rho[i], rho0, P_.v[i].norm()),
           steps_, static_cast<long>(P_.id[i]));
+      break;
     }
   }
+  mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
 }
 
 template class Solver<2>;

@@ -11,6 +11,7 @@
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/parallel/decomposition.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/relax.hpp"
@@ -44,6 +45,9 @@ class Solver {
   const Case& spec() const { return case_; }
   const WallSet<D>& walls() const { return walls_; }
   const BoundaryModel<D>* boundary() const { return boundary_.get(); }
+  // MPI domain decomposition: particles() holds the owned particles at [0, owned()) and,
+  // after a step, halo copies behind them (parallel/decomposition.hpp).
+  const Decomposition<D>& decomposition() const { return decomp_; }
   const PhaseTimes& phase_times() const { return times_; }
   PhaseTimes& phase_times() { return times_; }
   // The set-up relaxation (setup.relax), when the case asks for one.
@@ -51,7 +55,8 @@ class Solver {
 
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
-  // Throws InstabilityError on NaN or density outside [0.5, 2] rho0.
+  // Throws InstabilityError on NaN or density outside [0.5, 2] rho0 (on every rank when
+  // any rank finds such a particle).
   void check_state() const;
 
  private:
@@ -68,6 +73,7 @@ class Solver {
   WendlandC2<D> W_;
   FluidParams<D> F_;
   std::unique_ptr<BoundaryModel<D>> boundary_;
+  Decomposition<D> decomp_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
   SurfaceTensionScratch<D> surface_scratch_;

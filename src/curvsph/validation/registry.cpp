@@ -14,6 +14,7 @@ StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_p
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic_tank_study.cpp
 StudyResult run_dam_break_study(const StudyContext& ctx);         // dam_break_study.cpp
 StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cost_study.cpp
+StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -41,6 +42,8 @@ const std::vector<Study>& validation_studies() {
        &run_dam_break_study},
       {"shepard_cost", "Time per step: gamma = 1, volume and geometric Shepard (Calderon Table 1)",
        &run_shepard_cost_study},
+      {"scaling", "MPI strong and weak scaling, communication share, halo model (issue 8)",
+       &run_scaling_study},
   };
   return studies;
 }

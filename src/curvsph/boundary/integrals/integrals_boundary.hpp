@@ -23,6 +23,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   explicit IntegralsBoundary(const BoundaryContext<D>& ctx);
 
   std::string name() const override { return "integrals"; }
+  // Wall elements within a support of a particle interpolate their pressure from the fluid
+  // within a support of themselves.
+  Real halo_reach() const override { return 2; }
   void check_setup(const Particles<D>& P, const std::string& file) override;
   void prepare(const Particles<D>& P, Real t) override;
   void add_density(Particles<D>& P) override;

@@ -1,0 +1,149 @@
+#pragma once
+// Spatial domain decomposition of the particles over MPI ranks (issue 8).
+//
+// Ownership: orthogonal recursive bisection (ORB). The ranks are split in two halves, the
+// current box is cut across its longest axis where the global particle count matches the
+// halves' shares, and each half recurses. Every rank holds the whole (small) tree, so the
+// owner of a position is a descent of log2(ranks) comparisons. Outer sides on non-periodic
+// axes reach to infinity (a particle never leaves every sub-domain); periodic axes use the
+// domain box, positions being wrapped into it.
+//
+// Layout: a rank's Particles hold its owned particles at [0, owned()) and, between
+// exchange_halo() and drop_halo(), halo copies of other ranks' particles within halo_width of
+// its sub-domain at [owned(), size()). The solver's passes run over every index (owned and
+// halo) unchanged; only owned results are kept: a halo copy's density, pressure and sigma
+// are overwritten from its owner by refresh(), its acceleration is never used, and the halo
+// is dropped at the start of the next step. Halo copies keep their wrapped position; the
+// local cell list applies the periodic image itself, as it does for a rank's own particles.
+//
+// Every call is collective (all ranks call it in the same order). On one rank every call
+// returns at once and the arrays are untouched: the serial solver is the same program.
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/parallel/communicator.hpp"
+#include "curvsph/parallel/field_pack.hpp"
+
+namespace curvsph {
+
+struct DecompositionOptions {
+  Real halo_width = 0;               // >= the kernel support 2h
+  double rebalance_imbalance = 0.1;  // re-bisect when max/mean owned count exceeds 1 + this
+  bool check_conservation = false;   // count, mass and id sums checked after every migration
+  Vec3d domain_min = Vec3d::Zero(), domain_max = Vec3d::Zero();
+  std::array<bool, 3> periodic{false, false, false};
+};
+
+// Figures for metrics.json, summed or averaged over the run.
+struct DecompositionStats {
+  long migrations = 0, rebalances = 0;
+  double imbalance_sum = 0, imbalance_max = 1;  // max owned / mean owned, per migration
+  double halo_sum = 0, owned_sum = 0;           // local halo and owned counts, per exchange
+  long conservation_checks = 0;
+  std::int64_t count_error_max = 0, id_error_max = 0;
+  double mass_rel_error_max = 0;
+  double seconds = 0;  // time spent in the decomposition's own work (packing, search)
+};
+
+template <int D>
+class Decomposition {
+ public:
+  void configure(const DecompositionOptions& o);
+  bool active() const { return comm_.size() > 1; }
+  const mpi::Comm& comm() const { return comm_; }
+  Index owned() const { return owned_; }
+
+  // Start: every rank holds the same full particle set (generated deterministically);
+  // bisects it and keeps its own share.
+  void distribute(Particles<D>& P);
+  // After the drift: particles that left the sub-domain go to their new owner; re-bisects
+  // when the counts drift apart by more than rebalance_imbalance.
+  void migrate(Particles<D>& P);
+  // Appends halo copies (positions, velocities, masses, densities, pressures, sigma, phase,
+  // id) of other ranks' particles within halo_width of this sub-domain.
+  void exchange_halo(Particles<D>& P);
+  // Density, sigma and pressure of the halo copies from their owners (after the density pass).
+  void refresh(Particles<D>& P) { update_halo(P.rho, P.sigma, P.p); }
+  // Any per-particle arrays laid out like the particles (owned then halo): halo entries from
+  // their owners.
+  template <class... T>
+  void update_halo(std::vector<T>&... f);
+  // Removes the halo copies (start of a step; before integrating owned particles only).
+  void drop_halo(Particles<D>& P);
+  // Owned particles of every rank on rank 0, sorted by id (output, probes, analyses);
+  // empty on the other ranks.
+  Particles<D> gather(const Particles<D>& P) const;
+
+  // Global number of particles (owned, all ranks).
+  std::int64_t global_count() const { return comm_.sum(static_cast<std::int64_t>(owned_)); }
+  const DecompositionStats& stats() const { return stats_; }
+  // The rank owning position x.
+  int owner(const Vec<D>& x) const;
+
+ private:
+  struct Node {
+    int axis = 0;
+    Real cut = 0;
+    int child[2] = {-1, -1};
+    int rank = -1;  // leaf: the owning rank
+  };
+  struct Box {
+    Vec<D> lo, hi;
+  };
+  void bisect(const Particles<D>& P);
+  void split(std::vector<int>& node_of, const Particles<D>& P, int node, Box region, Box own,
+             int rank_lo, int rank_hi);
+  void send_leavers(Particles<D>& P);
+  void check_conservation(const Particles<D>& P);
+  Real distance_to_box(const Vec<D>& x, int rank) const;
+
+  mpi::Comm comm_ = mpi::Comm::world();
+  DecompositionOptions o_;
+  std::vector<Node> tree_;
+  std::vector<Box> boxes_;  // per rank
+  Index owned_ = 0;
+  // Halo bookkeeping: owned indices sent to each rank, and where each rank's copies start.
+  std::vector<std::vector<Index>> send_;
+  std::vector<Index> recv_begin_, recv_count_;
+  std::int64_t count0_ = 0, id0_ = 0, id2_0_ = 0;
+  double mass0_ = 0;
+  DecompositionStats stats_;
+};
+
+template <int D>
+template <class... T>
+void Decomposition<D>::update_halo(std::vector<T>&... f) {
+  if (!active()) return;
+  const auto P = static_cast<std::size_t>(comm_.size());
+  std::vector<std::vector<std::byte>> out(P);
+  for (std::size_t r = 0; r < P; ++r) {
+    const auto& idx = send_[r];
+    std::size_t bytes = 0;
+    ((bytes += idx.size() * sizeof(T)), ...);
+    out[r].resize(bytes);
+    std::byte* at = out[r].data();
+    auto put = [&](const auto& data) {
+      using V = typename std::decay_t<decltype(data)>::value_type;
+      for (const Index i : idx) {
+        std::memcpy(at, &data[static_cast<std::size_t>(i)], sizeof(V));
+        at += sizeof(V);
+      }
+    };
+    (put(f), ...);
+  }
+  const auto in = comm_.exchange(out);
+  for (std::size_t r = 0; r < P; ++r) {
+    const auto k = static_cast<std::size_t>(recv_count_[r]);
+    const std::byte* at = in[r].data();
+    auto get = [&](auto& data) {
+      using V = typename std::decay_t<decltype(data)>::value_type;
+      std::memcpy(static_cast<void*>(data.data() + recv_begin_[r]), at, k * sizeof(V));
+      at += k * sizeof(V);
+    };
+    if (k) (get(f), ...);
+  }
+}
+
+}  // namespace curvsph

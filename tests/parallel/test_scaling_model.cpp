@@ -1,0 +1,59 @@
+// The scaling model's geometry against hand-computed volumes and counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "curvsph/analysis/scaling_model.hpp"
+
+namespace curvsph::scaling {
+namespace {
+
+TEST(ScalingModel, TwoRanksCutTheBoxInHalvesAcrossX) {
+  const auto b = orb_boxes(2, 1.0);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_DOUBLE_EQ(b[0].hi[0], 0.5);
+  EXPECT_TRUE(b[0].cut[0]);
+  EXPECT_FALSE(b[0].cut[1]);
+  EXPECT_FALSE(b[0].cut[2]);
+  // A slab 0.5 x 1 x 1 with neighbours on its two x faces: halo 2 w per 0.5 of depth.
+  EXPECT_NEAR(halo_fraction(b[0], 0.05), 2 * 0.05 / 0.5, 1e-14);
+  // Periodic: the one other rank touches both faces.
+  EXPECT_EQ(neighbour_count(b, 0, 0.05, 1.0), 1);
+}
+
+TEST(ScalingModel, EightRanksGiveCubesWithSevenNeighbours) {
+  const auto b = orb_boxes(8, 1.0);
+  ASSERT_EQ(b.size(), 8u);
+  for (const auto& x : b) EXPECT_NEAR(x.volume(), 0.125, 1e-15);
+  // Box 0.5^3, w = 0.05: (0.5+2w)^3 with rounded edges and corners, minus 0.125, by hand.
+  const double pi = std::numbers::pi, a = 0.5, w = 0.05;
+  const double grown = a * a * a + 6 * a * a * w + 3 * pi * a * w * w + 4 * pi / 3 * w * w * w;
+  EXPECT_NEAR(halo_fraction(b[0], w), (grown - a * a * a) / (a * a * a), 1e-14);
+  // 2 x 2 x 2 periodic: every other box is adjacent.
+  EXPECT_EQ(neighbour_count(b, 0, w, 1.0), 7);
+}
+
+TEST(ScalingModel, CubeOfAMillionParticlesAtSupport2p6dx) {
+  // a = 100 dx, w = 2.6 dx: 0.156 + 3 pi 0.026^2 + 4 pi/3 0.026^3.
+  EXPECT_NEAR(cube_halo_fraction(1e6, 1.0, 2.6), 0.16244, 1e-5);
+}
+
+TEST(ScalingModel, StepTimeAddsHaloComputeAndMessages) {
+  StepModel m;
+  m.rate = 1e5;
+  m.exchanges = 3;
+  m.bytes_per_halo = 100;
+  m.latency = 1e-6;
+  m.bandwidth = 1e9;
+  const StepTime t = step_time(m, 1e5, 0.1, 26, 64);
+  EXPECT_DOUBLE_EQ(t.compute, 1.0);
+  EXPECT_DOUBLE_EQ(t.halo_compute, 0.1);
+  // 3 x 26 messages + 3 x 63 size exchanges + 4 x log2(64) reductions, 1 us each, + 1e4 x 100 B / 1
+  // GB/s.
+  EXPECT_NEAR(t.communication, (78 + 189 + 24) * 1e-6 + 1e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(step_time(m, 1e5, 0.1, 26, 1).communication, 0.0);
+}
+
+}  // namespace
+}  // namespace curvsph::scaling

@@ -101,14 +101,6 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   Solver<D>& solver = *solver_ptr;
 
   io::PvdSeries series(o.out_dir / "series.pvd");
-<<<<<<< HEAD
-  std::unique_ptr<ProbeWriter<D>> probes;
-  if (o.write_files && !c.probes.empty())
-    probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
-                                              static_cast<Real>(c.dx),
-                                              c.gravity.head<D>().template cast<Real>());
-=======
->>>>>>> mpi
   int snapshot = 0;
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || !c.write_vtk) return;
@@ -172,7 +164,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   std::unique_ptr<ProbeWriter<D>> probes;
   if (writer && !c.probes.empty())
     probes = std::make_unique<ProbeWriter<D>>(c.probes, (o.out_dir / "probes.csv").string(),
-                                              static_cast<Real>(c.dx));
+                                              static_cast<Real>(c.dx),
+                                              c.gravity.head<D>().template cast<Real>());
   const bool any_probes = o.write_files && !c.probes.empty();
   // [mpi] Probes and analyses see every particle: with MPI the owned particles are gathered
   // on rank 0 at probe and output times (not scalable beyond one node's memory; fine for

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "curvsph/boundary/wall_images.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -53,6 +54,8 @@ class BoundaryModel {
   // Indices of fluid particles found on the wrong side of a wall by the last prepare().
   virtual const std::vector<Index>& penetrated() const = 0;
   // Extra particles (ghosts, wall elements) for output; may be empty.
+  // Wall images of the last prepare() for pair terms outside the model (surface tension).
+  virtual WallImages<D> images() const { return {}; }
   virtual void append_output(std::vector<Vec<D>>& /*x*/, std::vector<int>& /*kind*/) const {}
 };
 

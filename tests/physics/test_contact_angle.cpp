@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "curvsph/analysis/contact_angle_fit.hpp"
+#include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/physics/contact_angle.hpp"
 
@@ -20,22 +21,20 @@ WallSet<2> walls_from(const char* yaml) {
   return parse_walls<2>(YAML::Load(yaml), "walls.yaml", ".");
 }
 
-Vec2d rotate(const Vec2d& v, double a) {
-  return {std::cos(a) * v.x() - std::sin(a) * v.y(), std::sin(a) * v.x() + std::cos(a) * v.y()};
-}
-
 // A drop of radius r centred at C meets the wall at P: its outward normal there is
-// (P - C)/r, and the angle inside the drop is acos(((P - C)/r) . n_w) (the definition of
+// m = (P - C)/r, and the angle inside the drop is acos(m . n_w) (the definition of
 // contact_angle.hpp, evaluated on the exact circle). The colour gradient of a particle at P
-// points into the drop; we give contact_angle_normal a wrong one (rotated by `error`) and the
-// angle of the circle, and expect the circle's own inward normal back, magnitude kept.
-void expect_turns_to_cap(const Vec2d& P, const Vec2d& C, const Vec2d& n_wall, double error) {
+// points into the drop; we give contact_angle_normal the gradient of an interface at a wrong
+// angle (`wrong`, on the same side of the wall normal) and the angle of the circle, and expect
+// the circle's own inward normal back, magnitude kept.
+void expect_turns_to_cap(const Vec2d& P, const Vec2d& C, const Vec2d& n_wall, double wrong) {
   const double r = (P - C).norm();
   const Vec2d m = (P - C) / r;
   const double theta = std::acos(m.dot(n_wall));
-  const Vec2d wrong = -3.0 * rotate(m, error);
-  const Vec<2> turned = contact_angle_normal<2>(wrong.cast<Real>(), n_wall.cast<Real>(),
-                                                static_cast<Real>(theta));
+  const Vec2d t = (m - m.dot(n_wall) * n_wall).normalized();
+  const Vec2d m_wrong = std::cos(wrong) * n_wall + std::sin(wrong) * t;
+  const Vec<2> turned = contact_angle_normal<2>((-3.0 * m_wrong).cast<Real>(),
+                                                n_wall.cast<Real>(), static_cast<Real>(theta));
   EXPECT_NEAR(turned.x(), -3.0 * m.x(), 1e-9) << "theta " << theta / kDeg;
   EXPECT_NEAR(turned.y(), -3.0 * m.y(), 1e-9) << "theta " << theta / kDeg;
 }
@@ -46,8 +45,8 @@ TEST(ContactAngle, TurnedNormalOnAFlatWallIsTheCapNormal) {
   for (double t : {20.0, 30.0, 60.0, 90.0, 120.0, 150.0}) {
     const Vec2d C(0, -std::cos(t * kDeg));
     for (double side : {-1.0, 1.0})
-      for (double error : {-25.0, 10.0, 40.0})
-        expect_turns_to_cap(Vec2d(side * std::sin(t * kDeg), 0), C, Vec2d(0, 1), error * kDeg);
+      for (double wrong : {5.0, 90.0, 175.0})
+        expect_turns_to_cap(Vec2d(side * std::sin(t * kDeg), 0), C, Vec2d(0, 1), wrong * kDeg);
   }
 }
 
@@ -68,7 +67,7 @@ TEST(ContactAngle, TurnedNormalOnACircleWallIsTheCapNormal) {
       const WallSet<2> bowl = walls_from("[{shape: circle, center: [0, 0], radius: 1, fluid: inside}]");
       const WallPoint<2> wp = bowl.closest(P * (1 - 1e-9));
       ASSERT_NEAR((wp.normal + P).norm(), 0, 1e-6);
-      for (double error : {-30.0, 15.0}) expect_turns_to_cap(P, C, wp.normal, error * kDeg);
+      for (double wrong : {10.0, 170.0}) expect_turns_to_cap(P, C, wp.normal, wrong * kDeg);
     }
 }
 
@@ -131,7 +130,7 @@ TEST(ContactAngleFit, MeasuresTheAngleOfALatticeCapOnAFlatWall) {
     std::vector<Vec2d> x;
     std::vector<int> drop;
     lattice_cap(floor, C, R, dx, x, drop);
-    const auto m = measure_contact_angles(x, drop, floor, 1.5 * dx, 1.5 * dx, 8 * dx);
+    const auto m = measure_contact_angles(x, drop, floor, 1.5 * dx, 1.5 * dx, 0.0);
     for (int s = 0; s < 2; ++s) {
       ASSERT_TRUE(m.side[s]) << "theta " << t << " side " << s;
       EXPECT_NEAR(m.side[s]->theta_deg, t, 3.0) << "side " << s;
@@ -143,7 +142,7 @@ TEST(ContactAngleFit, MeasuresTheAngleOfALatticeCapInABowl) {
   const WallSet<2> bowl =
       walls_from("[{shape: circle, center: [0, 0], radius: 1.9, fluid: inside}]");
   const double dx = 0.02, r = 0.6;
-  for (double cy : {-1.9, -1.6, -1.3}) {
+  for (double cy : {-1.9, -1.75, -1.6}) {
     const Vec2d C(0, cy);
     // Exact angle of the cap at the circle-circle intersection (as in the normal test).
     const double d = C.norm(), Rw = 1.9;
@@ -153,7 +152,7 @@ TEST(ContactAngleFit, MeasuresTheAngleOfALatticeCapInABowl) {
     std::vector<Vec2d> x;
     std::vector<int> drop;
     lattice_cap(bowl, C, r, dx, x, drop);
-    const auto m = measure_contact_angles(x, drop, bowl, 1.5 * dx, 1.5 * dx, 8 * dx);
+    const auto m = measure_contact_angles(x, drop, bowl, 1.5 * dx, 1.5 * dx, 0.0);
     for (int s = 0; s < 2; ++s) {
       ASSERT_TRUE(m.side[s]) << "cy " << cy << " side " << s;
       EXPECT_NEAR(m.side[s]->theta_deg, expected, 3.0) << "cy " << cy << " side " << s;

@@ -27,9 +27,29 @@ std::optional<Circle2> fit_circle(const std::vector<Vec2d>& points) {
   const Eigen::Vector3d s = A.colPivHouseholderQr().solve(b);
   const double r2 = s[0] * s[0] / 4 + s[1] * s[1] / 4 - s[2];
   if (!(r2 > 0) || !s.allFinite()) return std::nullopt;
+  // Kasa's algebraic fit shrinks the circle on a short noisy arc; a few Gauss-Newton steps on
+  // the geometric residuals |p - c| - r (Chernov 2010, ch. 4) remove that bias.
+  Eigen::Vector3d g(-s[0] / 2, -s[1] / 2, std::sqrt(r2));  // cx, cy, r in scaled coordinates
+  for (int it = 0; it < 20; ++it) {
+    Eigen::MatrixXd J(points.size(), 3);
+    Eigen::VectorXd res(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Vec2d d = (points[k] - mean) / scale - Vec2d(g[0], g[1]);
+      const double len = d.norm();
+      if (!(len > 0)) return std::nullopt;
+      const auto row = static_cast<Eigen::Index>(k);
+      J.row(row) << -d.x() / len, -d.y() / len, -1.0;
+      res[row] = len - g[2];
+    }
+    const Eigen::Vector3d step = J.colPivHouseholderQr().solve(-res);
+    if (!step.allFinite()) break;
+    g += step;
+    if (step.norm() < 1e-12 * (1 + g.norm())) break;
+  }
+  if (!g.allFinite() || !(g[2] > 0)) return std::nullopt;
   Circle2 c;
-  c.center = mean + scale * Vec2d(-s[0] / 2, -s[1] / 2);
-  c.radius = scale * std::sqrt(r2);
+  c.center = mean + scale * Vec2d(g[0], g[1]);
+  c.radius = scale * g[2];
   return c;
 }
 
@@ -86,12 +106,43 @@ std::optional<MeasuredAngle> circle_wall_angle(const Circle2& circle, const Wall
 
 std::vector<Vec2d> interface_points(const std::vector<Vec2d>& x, const std::vector<int>& is_drop,
                                     double pair_distance) {
-  std::vector<Vec2d> out;
+  // Unlike pairs closer than pair_distance straddle the interface.
   const double r2 = pair_distance * pair_distance;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  std::vector<int> on_interface(x.size(), 0);
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!is_drop[i]) continue;
     for (std::size_t j = 0; j < x.size(); ++j)
-      if (!is_drop[j] && (x[i] - x[j]).squaredNorm() < r2) out.push_back((x[i] + x[j]) / 2);
+      if (!is_drop[j] && (x[i] - x[j]).squaredNorm() < r2) {
+        pairs.emplace_back(i, j);
+        on_interface[i] = on_interface[j] = 1;
+      }
+  }
+  // Smoothed colour at the interface particles: Shepard-normalised Wendland C2 average of
+  // the drop indicator with h = pair_distance (support 2h); the sum is normalised, so a kernel
+  // cut by a wall does not bias it. The lattice staircase of the raw indicator is smoothed out.
+  const double h = pair_distance, support2 = 4 * h * h;
+  std::vector<double> colour(x.size(), 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!on_interface[i]) continue;
+    double num = 0, den = 0;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const double d2 = (x[i] - x[j]).squaredNorm();
+      if (d2 >= support2) continue;
+      const double q = std::sqrt(d2) / h;
+      const double w = std::pow(1 - q / 2, 4) * (2 * q + 1);
+      num += w * is_drop[j];
+      den += w;
+    }
+    colour[i] = num / den;
+  }
+  // The colour-1/2 crossing on each pair (linear between the two smoothed values).
+  std::vector<Vec2d> out;
+  out.reserve(pairs.size());
+  for (const auto& [i, j] : pairs) {
+    const double ci = colour[i], cj = colour[j];
+    const double f = ci != cj ? std::clamp((ci - 0.5) / (ci - cj), 0.0, 1.0) : 0.5;
+    out.push_back(x[i] + f * (x[j] - x[i]));
   }
   return out;
 }

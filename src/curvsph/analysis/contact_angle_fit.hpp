@@ -17,8 +17,9 @@ struct Circle2 {
   double radius = 0;
 };
 
-// Algebraic least-squares circle (Kasa 1976): minimises sum (|x|^2 + D x + E y + F)^2, then
-// centre (-D/2, -E/2), radius sqrt(D^2/4 + E^2/4 - F). Needs 3 points not on one line.
+// Least-squares circle: the algebraic fit of Kasa (1976) (minimises
+// sum (|x|^2 + D x + E y + F)^2: centre (-D/2, -E/2), radius sqrt(D^2/4 + E^2/4 - F)) as the
+// start of Gauss-Newton on the geometric residuals |x - c| - r. Needs 3 points not on a line.
 std::optional<Circle2> fit_circle(const std::vector<Vec2d>& points);
 
 struct MeasuredAngle {
@@ -36,8 +37,9 @@ std::optional<MeasuredAngle> circle_wall_angle(const Circle2& circle, const Wall
                                                const Vec2d& near, const Vec2d& inside,
                                                double max_arc);
 
-// Interface points of a two-phase particle set: midpoints of every (drop, other) pair closer
-// than `pair_distance` (the colour-0.5 contour, within dx/2).
+// Interface points of a two-phase particle set: on every (drop, other) pair closer than
+// `pair_distance`, the point where the smoothed drop colour (Shepard-normalised Wendland C2
+// average of the indicator, h = pair_distance) crosses 1/2, interpolated linearly.
 std::vector<Vec2d> interface_points(const std::vector<Vec2d>& x, const std::vector<int>& is_drop,
                                     double pair_distance);
 

@@ -33,8 +33,8 @@ void expect_turns_to_cap(const Vec2d& P, const Vec2d& C, const Vec2d& n_wall, do
   const double theta = std::acos(m.dot(n_wall));
   const Vec2d t = (m - m.dot(n_wall) * n_wall).normalized();
   const Vec2d m_wrong = std::cos(wrong) * n_wall + std::sin(wrong) * t;
-  const Vec<2> turned = contact_angle_normal<2>((-3.0 * m_wrong).cast<Real>(),
-                                                n_wall.cast<Real>(), static_cast<Real>(theta));
+  const Vec<2> turned = contact_angle_normal<2>((-3.0 * m_wrong).cast<Real>(), n_wall.cast<Real>(),
+                                                static_cast<Real>(theta));
   EXPECT_NEAR(turned.x(), -3.0 * m.x(), 1e-9) << "theta " << theta / kDeg;
   EXPECT_NEAR(turned.y(), -3.0 * m.y(), 1e-9) << "theta " << theta / kDeg;
 }
@@ -64,7 +64,8 @@ TEST(ContactAngle, TurnedNormalOnACircleWallIsTheCapNormal) {
       const Vec2d P = a * e + std::sqrt(1 - a * a) * q;
       ASSERT_NEAR(P.norm(), 1, 1e-12);
       ASSERT_NEAR((P - C).norm(), r, 1e-12);
-      const WallSet<2> bowl = walls_from("[{shape: circle, center: [0, 0], radius: 1, fluid: inside}]");
+      const WallSet<2> bowl =
+          walls_from("[{shape: circle, center: [0, 0], radius: 1, fluid: inside}]");
       const WallPoint<2> wp = bowl.closest(P * (1 - 1e-9));
       ASSERT_NEAR((wp.normal + P).norm(), 0, 1e-6);
       for (double wrong : {10.0, 170.0}) expect_turns_to_cap(P, C, wp.normal, wrong * kDeg);
@@ -93,7 +94,8 @@ TEST(ContactAngle, LayerSelectsParticlesNearAWallWithAnAngle) {
 }
 
 TEST(ContactAngle, RejectsAnAngleOutsideZeroTo180) {
-  const auto node = YAML::Load("[{shape: plane, point: [0, 0], normal: [0, 1], contact_angle: 180}]");
+  const auto node =
+      YAML::Load("[{shape: plane, point: [0, 0], normal: [0, 1], contact_angle: 180}]");
   EXPECT_THROW(parse_contact_angles<2>(node, "w.yaml", "."), InputError);
 }
 

@@ -166,8 +166,7 @@ DropContactAngles measure_contact_angles(const std::vector<Vec2d>& x,
   for (const auto& p : iface) {
     if (walls.closest(p).distance >= contact_band) continue;
     const int s = p.x() < centroid.x() ? 0 : 1;
-    if (!contact[s] || (s == 0 ? p.x() < contact[s]->x() : p.x() > contact[s]->x()))
-      contact[s] = p;
+    if (!contact[s] || (s == 0 ? p.x() < contact[s]->x() : p.x() > contact[s]->x())) contact[s] = p;
   }
   // fit_radius <= 0: half the distance between the two contact points (each fit then takes
   // the interface from its contact point to about the apex: a short arc of a noisy contour

@@ -23,10 +23,10 @@ struct Circle2 {
 std::optional<Circle2> fit_circle(const std::vector<Vec2d>& points);
 
 struct MeasuredAngle {
-  double theta_deg = 0;            // inside the drop
-  Vec2d contact = Vec2d::Zero();   // circle-wall intersection
-  Circle2 circle;                  // the fit
-  std::size_t points = 0;          // interface points used
+  double theta_deg = 0;           // inside the drop
+  Vec2d contact = Vec2d::Zero();  // circle-wall intersection
+  Circle2 circle;                 // the fit
+  std::size_t points = 0;         // interface points used
 };
 
 // The angle at the intersection of `circle` with the walls nearest to `near` (searched along

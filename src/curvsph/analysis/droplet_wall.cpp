@@ -124,8 +124,8 @@ std::unique_ptr<Analysis<D>> make_droplet_wall_analysis(const YAML::Node& params
     if (params && params.IsMap()) {
       yaml::check_keys(params, {"fit_radius_dx"}, c.file_name(), key);
       if (params["fit_radius_dx"])
-        fit_dx = yaml::read_nonnegative(params["fit_radius_dx"], c.file_name(),
-                                     key + ".fit_radius_dx");
+        fit_dx =
+            yaml::read_nonnegative(params["fit_radius_dx"], c.file_name(), key + ".fit_radius_dx");
     }
     if (c.surface_tension.empty())
       throw InputError(c.file_name(), key,
@@ -140,7 +140,6 @@ std::unique_ptr<Analysis<D>> make_droplet_wall_analysis(const YAML::Node& params
   }
 }
 
-template std::unique_ptr<Analysis<2>> make_droplet_wall_analysis<2>(const YAML::Node&,
-                                                                    const Case&);
+template std::unique_ptr<Analysis<2>> make_droplet_wall_analysis<2>(const YAML::Node&, const Case&);
 
 }  // namespace curvsph

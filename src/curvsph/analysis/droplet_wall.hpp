@@ -7,7 +7,8 @@ namespace curvsph {
 // pair) on a wall with a contact angle, 2-D. At every output time the two contact angles are
 // measured from the interface shape (contact_angle_fit.hpp: circle fit to the interface points
 // within fit_radius_dx * dx of each contact point, by default (0) within half the distance
-// between the two contact points, intersected with the wall, angle inside the drop). Figures: contact_angle_deg_left/_right and their mean contact_angle_deg at the end,
+// between the two contact points, intersected with the wall, angle inside the drop). Figures:
+// contact_angle_deg_left/_right and their mean contact_angle_deg at the end,
 // contact_angle_initial_deg (mean at t = 0, to show the drop moved), contact_angle_imposed_deg
 // (the wall's contact_angle at the contact points), contact_angle_error_deg (the larger of
 // the two |measured - imposed|), droplet_mass_change (|M_end - M_0| / M_0 of the drop phase),

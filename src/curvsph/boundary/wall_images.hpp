@@ -18,8 +18,8 @@ struct WallImages {
   const std::vector<Vec<D>>* x = nullptr;
   const std::vector<Index>* source = nullptr;
   const std::vector<Real>* beta = nullptr;
-  const std::vector<std::int32_t>* wall = nullptr;        // index in the WallSet
-  const std::vector<VecD<D>>* normal = nullptr;           // that wall's normal, into the fluid
+  const std::vector<std::int32_t>* wall = nullptr;         // index in the WallSet
+  const std::vector<VecD<D>>* normal = nullptr;            // that wall's normal, into the fluid
   const std::vector<std::uint8_t>* reflections = nullptr;  // 1 single, 2-3 corner images
   const CellList<D>* cells = nullptr;                      // built over *x
   bool empty() const { return cells == nullptr || x->empty(); }

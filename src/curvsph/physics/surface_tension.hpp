@@ -79,8 +79,8 @@ void add_surface_tension(Particles<D>& P, const CellList<D>& cells, const Wendla
           if (!in_pair(j)) return;
           const Real dc = colour(j) - ci;
           if (dc != 0)
-            g += (P.mass[j] / (P.rho[j] * (*G.beta)[k])) * dc * W.gradient_factor(std::sqrt(r2)) *
-                 r;
+            g +=
+                (P.mass[j] / (P.rho[j] * (*G.beta)[k])) * dc * W.gradient_factor(std::sqrt(r2)) * r;
         });
     }
     s.valid[i] = g.norm() > threshold;

@@ -127,8 +127,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_);
     if (!case_.surface_tension.empty()) {
-      const SurfaceTensionWalls<D> st_walls{
-          &walls_, &contact_angles_, boundary_ ? boundary_->images() : WallImages<D>{}, kContactLayer * W_.h};
+      const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
+                                            boundary_ ? boundary_->images() : WallImages<D>{},
+                                            kContactLayer * W_.h};
       for (const auto& st : case_.surface_tension)
         add_surface_tension(
             P_, cells_, W_,

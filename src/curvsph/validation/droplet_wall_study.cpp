@@ -17,7 +17,8 @@ namespace curvsph {
 
 StudyResult run_droplet_wall_study(const StudyContext& ctx) {
   const auto case_path = ctx.source_dir / "cases" / "droplet_wall.yaml";
-  const std::vector<int> angles = ctx.quick ? std::vector<int>{60} : std::vector<int>{30, 60, 90, 120};
+  const std::vector<int> angles =
+      ctx.quick ? std::vector<int>{60} : std::vector<int>{30, 60, 90, 120};
   const std::string t_end = ctx.quick ? "0.3" : "";  // "": the case's own end time
   std::filesystem::create_directories(ctx.out_dir);
   std::ofstream csv(ctx.out_dir / "droplet_wall.csv");
@@ -51,9 +52,10 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
     csv << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.4f},{:.6g},{},{},{},{},{:.1f}\n", theta, left,
                        right, mean, init, dm, wc, m["particles"].get<long>(),
                        m["steps"].get<long>(), t_reached, m["wall_seconds"].get<double>());
-    table += fmt::format("| {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.3g} | {} | {} | {:.0f} |\n",
-                         theta, left, right, mean, init, err, dm, wc, m["steps"].get<long>(),
-                         m["wall_seconds"].get<double>());
+    table += fmt::format(
+        "| {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.3g} | {} | {} | {:.0f} |\n", theta,
+        left, right, mean, init, err, dm, wc, m["steps"].get<long>(),
+        m["wall_seconds"].get<double>());
     for (const char* k : {"contact_angle_deg", "contact_angle_deg_left", "contact_angle_deg_right",
                           "contact_angle_initial_deg", "contact_angle_error_deg",
                           "droplet_mass_change", "wall_crossings"})
@@ -65,11 +67,12 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
   r.metrics["contact_angle_error_deg_max"] = worst;
   r.metrics["droplet_mass_change_max"] = mass;
   r.metrics["wall_crossings_total"] = crossings;
-  const std::string ref = fmt::format("dx = R0/10, t = {} s, angles {}", t_reached,
-                                      fmt::join(angles, ", "));
+  const std::string ref =
+      fmt::format("dx = R0/10, t = {} s, angles {}", t_reached, fmt::join(angles, ", "));
   r.summary.push_back({"droplet_wall.contact_angle_error_deg (max over angles, both sides)", worst,
                        "<= 5", "issue 6; " + ref, worst <= 5});
-  r.summary.push_back({"droplet_wall.droplet_mass_change (max)", mass, "= 0", "issue 6", mass == 0});
+  r.summary.push_back(
+      {"droplet_wall.droplet_mass_change (max)", mass, "= 0", "issue 6", mass == 0});
   r.summary.push_back({"droplet_wall.wall_crossings (total)", static_cast<double>(crossings), "= 0",
                        "issue 6", crossings == 0});
   run_plot_script(ctx, "plot_droplet_wall.py", {ctx.out_dir.string()});

@@ -97,6 +97,8 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
         "measurement on the initial half disk: the drop has to move to every imposed angle.\n\n"
      << table << "\n"
      << summary_markdown(r.summary) << "\n"
+     << "Discussion of the figures, and what is not yet understood: findings.md (written by "
+        "hand for the run it names; rerunning the study does not update it).\n\n"
      << "Per-run data in theta_*/ (contact_angle_history.csv: the angles at every output "
         "time; droplet_fit.csv: the fitted circles).\n\n"
      << "![measured against imposed](angles.png)\n\n![final shapes](shapes.png)\n\n"

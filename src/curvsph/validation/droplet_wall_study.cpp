@@ -86,7 +86,7 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
         "`contact_angle`, swept here with `--set walls.0.contact_angle=THETA`. Regenerate with "
         "`build/curvsph validate droplet_wall`.\n\n"
         "Contact angle model (src/curvsph/physics/contact_angle.hpp): Brackbill et al. 1992 wall "
-        "adhesion, the interface normal of every particle of the pair within 1.5 h of the wall "
+        "adhesion, the interface normal of every particle of the pair within 0.8 h of the wall "
         "turned to n_w cos(theta) + t_w sin(theta), theta inside the drop, n_w from the NURBS "
         "projection; curvature from the corrected normals, ghosts in both CSF sums.\n\n"
         "Measurement (src/curvsph/analysis/contact_angle_fit.hpp): interface points = midpoints "

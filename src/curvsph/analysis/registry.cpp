@@ -3,6 +3,7 @@
 #include "curvsph/analysis/couette_analysis.hpp"
 #include "curvsph/analysis/cylinder_lattice.hpp"
 #include "curvsph/analysis/dam_break_analysis.hpp"
+#include "curvsph/analysis/droplet_wall.hpp"
 #include "curvsph/analysis/hydrostatic_analysis.hpp"
 #include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/poiseuille_analysis.hpp"
@@ -25,6 +26,7 @@ struct Entry {
 const Entry<2> kEntries2[] = {
     {"taylor_green", &make_taylor_green_analysis, &taylor_green_initial},
     {"static_droplet", &make_static_droplet_analysis<2>, nullptr},
+    {"droplet_wall", &make_droplet_wall_analysis<2>, nullptr},
     {"couette", &make_couette_analysis, &couette_initial},
     {"poiseuille", &make_poiseuille_analysis, nullptr},
     {"node_density", &make_node_density_analysis<2>, nullptr},

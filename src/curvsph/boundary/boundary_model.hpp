@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "curvsph/boundary/wall_images.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -58,6 +59,8 @@ class BoundaryModel {
   // pressure from fluid within one support of the element, itself within one support.
   virtual Real halo_reach() const { return 1; }
   // Extra particles (ghosts, wall elements) for output; may be empty.
+  // Wall images of the last prepare() for pair terms outside the model (surface tension).
+  virtual WallImages<D> images() const { return {}; }
   virtual void append_output(std::vector<Vec<D>>& /*x*/, std::vector<int>& /*kind*/) const {}
 };
 

@@ -147,7 +147,16 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
                      fmt::format("shape '{}' is not available in {}-D (dimension: {}; shapes in "
                                  "{}-D: {})",
                                  shape, D, D, D, names_list(wall_shape_names<D>())));
-  std::vector<WallPtr<D>> walls = make(WallSource{node, file, key, base_dir});
+  // `contact_angle` is a wetting property of any wall (read by physics/contact_angle.cpp),
+  // not a shape key: the shape factory sees the element without it.
+  // (Copy-constructed, never assigned: assigning a YAML::Node rebinds the node it shares.)
+  const YAML::Node shape_node = yaml::has(node, "contact_angle") ? [&] {
+    YAML::Node copy = YAML::Clone(node);
+    copy.remove("contact_angle");
+    return copy;
+  }()
+                                                                  : node;
+  std::vector<WallPtr<D>> walls = make(WallSource{shape_node, file, key, base_dir});
   if (yaml::has(node, "motion")) {
     const WallMotion<D> m = parse_wall_motion<D>(node["motion"], file, yaml::join(key, "motion"));
     for (const auto& w : walls) attach_motion(w, m);

@@ -34,6 +34,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (c.dimension != D) throw InputError(c.file_name(), "dimension", "solver dimension mismatch");
   if (c.root["walls"] && c.root["walls"].IsSequence())
     walls_ = parse_walls<D>(c.root["walls"], c.file_name(), c.file.parent_path());
+  contact_angles_ = parse_contact_angles<D>(c.root["walls"], c.file_name(), c.file.parent_path());
   generate_particles<D>(c, P_, walls_);
   for (const auto& f : c.fluids) {
     F_.rho0.push_back(static_cast<Real>(f.rho0));
@@ -149,11 +150,16 @@ void Solver<D>::compute_rates(Real dt_rho) {
   {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_);
-    for (const auto& st : case_.surface_tension)
-      add_surface_tension(
-          P_, cells_, W_,
-          SurfaceTensionPair{st.fluid_a, st.fluid_b, static_cast<Real>(st.coefficient)},
-          surface_scratch_);
+    if (!case_.surface_tension.empty()) {
+      const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
+                                            boundary_ ? boundary_->images() : WallImages<D>{},
+                                            kContactLayer * W_.h};
+      for (const auto& st : case_.surface_tension)
+        add_surface_tension(
+            P_, cells_, W_,
+            SurfaceTensionPair{st.fluid_a, st.fluid_b, static_cast<Real>(st.coefficient)},
+            surface_scratch_, st_walls);
+    }
   }
   if (boundary_) {
     Stopwatch sw{times_.boundary};

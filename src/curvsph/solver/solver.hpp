@@ -68,6 +68,7 @@ class Solver {
 
   Case case_;
   WallSet<D> walls_;
+  std::vector<std::optional<Real>> contact_angles_;  // per wall (physics/contact_angle.hpp)
   Particles<D> P_;
   CellList<D> cells_;
   WendlandC2<D> W_;

@@ -15,6 +15,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic
 StudyResult run_dam_break_study(const StudyContext& ctx);         // dam_break_study.cpp
 StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cost_study.cpp
 StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_study.cpp
+StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wall_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -44,6 +45,9 @@ const std::vector<Study>& validation_studies() {
        &run_shepard_cost_study},
       {"scaling", "MPI strong and weak scaling, communication share, halo model (issue 8)",
        &run_scaling_study},
+      {"droplet_wall",
+       "Drop on a NURBS wall with a dip, contact angle 30-120 deg (Barker §4.2, Fig. 10)",
+       &run_droplet_wall_study},
   };
   return studies;
 }

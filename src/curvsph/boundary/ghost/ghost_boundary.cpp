@@ -109,6 +109,10 @@ class GhostBoundary final : public BoundaryModel<D> {
     kind.insert(kind.end(), G_.size(), 1);
   }
 
+  WallImages<D> images() const override {
+    return {&G_.x, &G_.source, &G_.beta, &G_.wall, &G_.normal, &G_.reflections, &cells_};
+  }
+
   const GhostSet<D>& ghosts() const { return G_; }
 
  private:

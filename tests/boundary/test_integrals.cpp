@@ -91,10 +91,14 @@ TEST(IntegralsBoundary, TinyHydrostaticTankStaysAtRest) {
   EXPECT_EQ(m["steps"].get<long>(), 300);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
   // Bounded kinetic energy; the pressure rings acoustically after the start (the discrete
-  // BI identity holds to a few % at h/dx = 2, integrals_boundary.cpp item 2b), so "close to
-  // hydrostatic" is within 10 % of rho0 g H after these 300 steps (t sqrt(g/H) = 1.2).
+  // BI identity holds to a few % at h/dx = 2, integrals_boundary.cpp item 2b). Measured after
+  // these 300 steps (t sqrt(g/H) = 1.24): KE max 6.0e-5 M g H, pressure error 0.035 of
+  // rho0 g H; the bounds leave a margin for other compilers. This checks the start-up only:
+  // run on to 3000 steps (t sqrt(g/H) = 12.4) this 12-row tank does not stay at rest (KE
+  // max 1.3e-4 to 4.9e-4, pressure error 0.24-0.30 at the end, depending on the output
+  // times that cut the steps; issue 5).
   EXPECT_LT(m["kinetic_energy_max"].get<double>(), 1e-4);
-  EXPECT_LT(m["pressure_l2_error"].get<double>(), 0.1);
+  EXPECT_LT(m["pressure_l2_error"].get<double>(), 0.05);
 }
 
 TEST(IntegralsBoundary, HydrostaticInitialFieldIsTheCompressibleBalance) {

@@ -91,10 +91,38 @@ TEST(IntegralsBoundary, TinyHydrostaticTankStaysAtRest) {
   EXPECT_EQ(m["steps"].get<long>(), 300);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
   // Bounded kinetic energy; the pressure rings acoustically after the start (the discrete
-  // BI identity holds to a few % at h/dx = 2, integrals_boundary.cpp item 2b), so "close to
-  // hydrostatic" is within 10 % of rho0 g H after these 300 steps (t sqrt(g/H) = 1.2).
+  // BI identity holds to a few % at h/dx = 2, integrals_boundary.cpp item 2b). Measured after
+  // these 300 steps (t sqrt(g/H) = 1.24): KE max 6.0e-5 M g H, pressure error 0.035 of
+  // rho0 g H; the bounds leave a margin for other compilers. This checks the start-up only:
+  // run on to 3000 steps (t sqrt(g/H) = 12.4) this 12-row tank does not stay at rest (KE
+  // max 1.3e-4 to 4.9e-4, pressure error 0.24-0.30 at the end, depending on the output
+  // times that cut the steps; issue 5).
   EXPECT_LT(m["kinetic_energy_max"].get<double>(), 1e-4);
-  EXPECT_LT(m["pressure_l2_error"].get<double>(), 0.1);
+  EXPECT_LT(m["pressure_l2_error"].get<double>(), 0.05);
+}
+
+TEST(IntegralsBoundary, HydrostaticInitialFieldIsTheCompressibleBalance) {
+  // `initial: hydrostatic` solves dp/dz = rho(p) g; with the linear EOS rho = rho0 + p/c0^2
+  // that is p = rho0 c0^2 (exp(g z/c0^2) - 1) (analytic), and the bulk particles of the
+  // lattice then start in balance: the SPH pressure gradient cancels gravity to the lattice's
+  // moment error (~1e-3 g), where p = rho0 g z left 1 % of g at the bottom.
+  const Case c = read_case(tank("geometric"), "integrals_test");
+  Solver<2> s(c);
+  s.initialize();
+  const auto& P = s.particles();
+  const double rho0 = 998, g = 9.81, c0 = 6.9, H = 0.048, h = c.h();
+  int bulk = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double z = H - P.x[i][1];
+    const double ref = rho0 * c0 * c0 * std::expm1(g * z / (c0 * c0));
+    EXPECT_NEAR(P.p[i], ref, 1e-5 * rho0 * g * H) << "particle at " << P.x[i].transpose();
+    const double x = P.x[i][0], y = P.x[i][1];
+    if (x > 2 * h && x < 0.1 - 2 * h && y > 2 * h && z > 2 * h) {
+      ++bulk;
+      EXPECT_LT(P.a[i].norm(), 2e-3 * g) << "particle at " << P.x[i].transpose();
+    }
+  }
+  EXPECT_GT(bulk, 20);
 }
 
 TEST(IntegralsBoundary, WallForceKeyIsParsed) {

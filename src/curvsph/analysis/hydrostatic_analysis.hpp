@@ -24,9 +24,10 @@ Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const
 // time, reduced kinetic energy, reduced pressure error at every output time) and
 // hydrostatic_profile.csv (y, p, p_exact of every particle at the end).
 std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c);
-// p = rho0 g (y_s - y) (clamped at 0 above the surface; y the last axis: y in 2-D, z in
-// 3-D with gravity along -z), rho from the EOS, mass = rho * the lattice volume (so
-// sigma = rho/m keeps the lattice's number density; see taylor_green_initial), velocity 0.
+// p from dp/dz = rho(p) g at depth z = y_s - y (the compressible balance with the EOS density,
+// hydrostatic_analysis.cpp; 0 above the surface), rho from the EOS, mass = rho * the
+// lattice volume (so sigma = rho/m keeps the lattice's number density; see
+// taylor_green_initial), velocity 0. y is the last axis: y in 2-D, z in 3-D (gravity along -z).
 template <int D>
 void hydrostatic_initial(const Case& c, const YAML::Node& params, const Eos& eos,
                          const std::vector<Real>& rho0, Particles<D>& P);

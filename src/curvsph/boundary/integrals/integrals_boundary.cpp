@@ -33,7 +33,9 @@
 // 2b. That check assumes the discrete identity sum_j V_j grad_i W_ij = sum_b W_ib n_b A_b.
 //    On a lattice at h/dx = 2 it holds only to a few % near a wall (first row: +2.7 %, second
 //    -2.9 %, third -19 % of sum_b W n A), and the residual R_i multiplies 2 p_i: at the bottom
-//    of a 0.5 m water column that is an acceleration of the order of g on the first rows,
+//    of a 0.5 m water column that is an acceleration of the order of g on the first rows
+//    (measured at t = 0 on the N = 9800 lattice: -1.76 g, +0.60 g, +0.60 g on the floor's
+//    first three rows, mean over rows of -0.88 g, +0.31 g, +0.31 g beside the side walls),
 //    which rings the column acoustically (pressure errors ~ 5-10 % of rho0 g H, decaying
 //    slowly under delta-SPH). With `boundary.pressure: consistent` the model subtracts p_i
 //    times the residual,
@@ -50,6 +52,24 @@
 //    the support (contact lines) the residual is mostly the free surface's, which the
 //    symmetric form needs for a stable surface: the correction fades with the filled part of
 //    the support, sum_j W_ij V_j / gamma_i, from 1 at 0.97 to 0 at 0.9.
+//    On the N = 9800 tank (h/dx = 2) consistent keeps the pressure error at 0.003-0.007 up to
+//    t sqrt(g/H) = 1, but a contact-line particle crosses a side wall at 1.06; with the wall
+//    force of item 8 it runs on and its kinetic energy grows to 4.7e-4 MgH by t sqrt(g/H) =
+//    1.6 (pressure error 0.14 at 2). In a continuity-
+//    density scheme nothing else stiffens a particle against a wall: its own motion towards
+//    the wall gives sum_j V_j (u_i - u_j).grad W - sum_b (u_i - u_b).n W A = 0 by the same
+//    identity, so the density does not rise; the 2 p_i sum_b W n A of the symmetric form is
+//    that stiffness, and its residual is the price.
+// 2c. Tried and not kept (same tank, to t sqrt(g/H) = 2): (i) the correction of 2b only in
+//    the directions the wall elements face (projector N / lambda_max(N), N = sum_b W A n n^T),
+//    keeping the tangential ordering force along the wall: error 0.004 up to t sqrt(g/H) =
+//    0.79, then a contact-line particle crosses a side wall; with the wall force the kinetic
+//    energy grows ~2.5x every 0.4 (8.8e-5 at 2, error 0.017, worst at the bottom corners).
+//    (ii) p_b from particle i alone, p_i + rho_i g.(x_b - x_i) (the Neumann condition of a
+//    mirror particle): a particle crosses a wall at t sqrt(g/H) = 0.26 (normal form), 0.46
+//    (symmetric: p_i < 0 at a contact line makes 2 p_i pull to the wall), 0.8 (consistent).
+//    (iii) p_b clamped at the background pressure where the hydrostatic extrapolation goes
+//    negative above the free surface: the crossing comes sooner (0.68 against 0.79).
 //
 // 3. Wall pressure. p_b is extrapolated from the fluid around the element centre x_b by a
 //    Shepard average with the hydrostatic correction (grad p = rho g at rest):

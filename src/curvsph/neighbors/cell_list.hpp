@@ -135,6 +135,11 @@ class CellList {
   // Particle indices in cell order: the permutation that makes cells contiguous in memory.
   const std::vector<Index>& sorted() const { return sorted_; }
   Index cell_count() const { return static_cast<Index>(start_.size()) - 1; }
+  // Bytes held by the index arrays (memory-per-particle accounting of the throughput study).
+  std::size_t bytes() const {
+    return (cell_of_.capacity() + start_.capacity() + fill_.capacity() + sorted_.capacity()) *
+           sizeof(Index);
+  }
 
  private:
   // The cells c0-1..c0+1 of the row starting at linear index base, in that order.

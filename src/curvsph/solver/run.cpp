@@ -197,6 +197,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const auto& pt = solver.phase_times();
   m["seconds_neighbors"] = pt.neighbors;
   m["seconds_boundary"] = pt.boundary;
+  m["seconds_boundary_prepass"] = pt.boundary_prepass;
   m["seconds_density"] = pt.density;
   m["seconds_forces"] = pt.forces;
   m["seconds_integrate"] = pt.integrate;

@@ -91,6 +91,7 @@ template <int D>
 void Solver<D>::compute_rates(Real dt_rho) {
   if (boundary_) {
     Stopwatch sw{times_.boundary};
+    Stopwatch sw_prepass{times_.boundary_prepass};
     boundary_->prepare(P_, t_);
     if (!boundary_->penetrated().empty()) {
       const Index i = boundary_->penetrated().front();
@@ -109,9 +110,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
       // density rate lagging half a step amplifies sound waves every step).
       if (dt_rho > 0) {
         const bool delta = F_.delta_sph > 0;
-        if (delta) renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+        if (delta) renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_);
         continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
-                        delta ? &grad_rho_ : nullptr);
+                        delta ? &grad_rho_ : nullptr, pair_);
         if (boundary_) boundary_->add_density_rate(P_);
         parallel_for(static_cast<Index>(P_.size()),
                      [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
@@ -124,7 +125,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   {
     Stopwatch sw{times_.forces};
-    fluid_forces(P_, cells_, W_, F_);
+    fluid_forces(P_, cells_, W_, F_, pair_);
     for (const auto& st : case_.surface_tension)
       add_surface_tension(
           P_, cells_, W_,
@@ -146,6 +147,15 @@ void Solver<D>::initialize() {
   build_neighbors();
   compute_rates(0);
   check_state();
+}
+
+template <int D>
+std::size_t Solver<D>::bytes_held() const {
+  auto held = [](const auto& v) {
+    return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
+  };
+  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + held(shift_) + held(shift_dv_) +
+         held(shift_drho_) + held(order_);
 }
 
 template <int D>

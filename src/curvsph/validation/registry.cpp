@@ -12,6 +12,7 @@ StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_
 StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
 StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_pipe_study.cpp
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic_tank_study.cpp
+StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -35,6 +36,9 @@ const std::vector<Study>& validation_studies() {
       {"hydrostatic_tank",
        "2-D tank at rest, boundary integrals, geometric vs volume Shepard (Calderon §3.1)",
        run_hydrostatic_tank_study},
+      {"throughput",
+       "Particle-steps per second: 3-D dam break (DualSPHysics reference), 10^6 box, Couette",
+       &run_throughput_study},
   };
   return studies;
 }

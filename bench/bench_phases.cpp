@@ -49,8 +49,9 @@ BoxState& box() {
 
 void report(benchmark::State& state, std::size_t n) {
   state.counters["particles"] = static_cast<double>(n);
-  state.counters["particles_per_second"] = benchmark::Counter(
-      static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["particles_per_second"] =
+      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
 
 void BM_PhaseNeighbors(benchmark::State& state) {

@@ -72,7 +72,8 @@ struct Particles {
     for_each_field([&](const char*, const auto& data) {
       b += data.capacity() * sizeof(typename std::decay_t<decltype(data)>::value_type);
     });
-    return b + size() * (sizeof(Vec<D>) + sizeof(Real) + sizeof(std::int32_t) + sizeof(std::int64_t));
+    return b +
+           size() * (sizeof(Vec<D>) + sizeof(Real) + sizeof(std::int32_t) + sizeof(std::int64_t));
   }
 
   // Reorder every field: new[k] = old[order[k]].

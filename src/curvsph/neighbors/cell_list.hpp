@@ -144,8 +144,8 @@ class CellList {
  private:
   // The cells c0-1..c0+1 of the row starting at linear index base, in that order.
   template <class F>
-  void visit_row(const Vec<D>& x, const std::vector<Vec<D>>& pos, int c0, Index base,
-                 Vec<D> shift, F& f) const {
+  void visit_row(const Vec<D>& x, const std::vector<Vec<D>>& pos, int c0, Index base, Vec<D> shift,
+                 F& f) const {
     const int n0 = count_[0];
     if (!periodic_[0]) {
       const int lo = std::max(c0 - 1, 0), hi = std::min(c0 + 1, n0 - 1);

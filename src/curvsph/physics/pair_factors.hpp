@@ -37,8 +37,7 @@ struct PairFactors {
   }
 
   std::size_t bytes() const {
-    return (volume.capacity() + inv_s2.capacity() + p_s2.capacity() + mu.capacity()) *
-           sizeof(Real);
+    return (volume.capacity() + inv_s2.capacity() + p_s2.capacity() + mu.capacity()) * sizeof(Real);
   }
 };
 

@@ -154,8 +154,8 @@ std::size_t Solver<D>::bytes_held() const {
   auto held = [](const auto& v) {
     return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
   };
-  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + held(shift_) + held(shift_dv_) +
-         held(shift_drho_) + held(order_);
+  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + held(shift_) +
+         held(shift_dv_) + held(shift_drho_) + held(order_);
 }
 
 template <int D>

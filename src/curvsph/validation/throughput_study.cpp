@@ -29,8 +29,8 @@ namespace curvsph {
 namespace {
 
 struct Config {
-  std::string name;         // row label
-  std::string case_file;    // under cases/
+  std::string name;       // row label
+  std::string case_file;  // under cases/
   std::vector<std::string> overrides;
   bool drop_walls = false;  // fluid only: `boundary.method: none` refuses a case with walls
   int warmup = 0, steps = 0;
@@ -42,7 +42,7 @@ struct Measurement {
   int threads = 0;
   double fluid = 0, interacting = 0;  // particles; interacting = fluid + ghosts/elements
   int steps = 0;
-  double seconds = 0;                 // timed steps only
+  double seconds = 0;  // timed steps only
   double particle_steps_per_second = 0;
   PhaseTimes phases;
   double bytes_held = 0;
@@ -56,8 +56,7 @@ double peak_rss_bytes() {
 }
 
 template <int D>
-Measurement measure(const Case& c, const std::string& name, int threads, int warmup,
-                    int steps) {
+Measurement measure(const Case& c, const std::string& name, int threads, int warmup, int steps) {
   omp_set_num_threads(threads);
   Solver<D> solver(c);
   solver.initialize();
@@ -108,22 +107,49 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
     return a;
   };
   const std::vector<Config> configs = {
-      {"dam_break", "dam_break_3d.yaml", with(dam, {"resolution.h_over_dx=1.732"}), false, dam_warmup,
-       dam_steps, {2, 1}},
-      {"dam_break_ghost", "dam_break_3d.yaml",
+      {"dam_break",
+       "dam_break_3d.yaml",
+       with(dam, {"resolution.h_over_dx=1.732"}),
+       false,
+       dam_warmup,
+       dam_steps,
+       {2, 1}},
+      {"dam_break_ghost",
+       "dam_break_3d.yaml",
        with(dam, {"resolution.h_over_dx=1.732", "boundary.method=ghost", "boundary.map=mirror",
                   "boundary.velocity=no_slip"}),
-       false, dam_warmup, dam_steps, {2, 1}},
-      {"dam_break_fluid_only", "dam_break_3d.yaml",
-       with(dam, {"resolution.h_over_dx=1.732", "boundary.method=none"}), true, dam_warmup,
-       dam_steps, {2, 1}},
-      {"dam_break_h2", "dam_break_3d.yaml", with(dam, {"resolution.h_over_dx=2"}), false, dam_warmup,
-       dam_steps, {2, 1}},
-      {"periodic_box_1e6", "periodic_box_3d.yaml", {"resolution.dx=0.01"}, false, ctx.quick ? 1 : 2,
-       ctx.quick ? 2 : 10, {2, 1}},
-      {"couette_density_preserving", "couette.yaml",
-       {"boundary.map=density_preserving", "output.vtk=false"}, false, ctx.quick ? 5 : 20,
-       ctx.quick ? 20 : 200, {2, 1}},
+       false,
+       dam_warmup,
+       dam_steps,
+       {2, 1}},
+      {"dam_break_fluid_only",
+       "dam_break_3d.yaml",
+       with(dam, {"resolution.h_over_dx=1.732", "boundary.method=none"}),
+       true,
+       dam_warmup,
+       dam_steps,
+       {2, 1}},
+      {"dam_break_h2",
+       "dam_break_3d.yaml",
+       with(dam, {"resolution.h_over_dx=2"}),
+       false,
+       dam_warmup,
+       dam_steps,
+       {2, 1}},
+      {"periodic_box_1e6",
+       "periodic_box_3d.yaml",
+       {"resolution.dx=0.01"},
+       false,
+       ctx.quick ? 1 : 2,
+       ctx.quick ? 2 : 10,
+       {2, 1}},
+      {"couette_density_preserving",
+       "couette.yaml",
+       {"boundary.map=density_preserving", "output.vtk=false"},
+       false,
+       ctx.quick ? 5 : 20,
+       ctx.quick ? 20 : 200,
+       {2, 1}},
   };
 
   std::vector<Measurement> rows;
@@ -155,12 +181,13 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
            "integrate,bytes_held_per_fluid_particle,peak_rss_bytes\n";
     for (const auto& m : rows) {
       const auto& p = m.phases;
-      csv << fmt::format("{},{},{},{:.1f},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},"
-                         "{:.1f},{:.0f}\n",
-                         m.name, m.threads, m.fluid, m.interacting, m.steps, m.seconds,
-                         m.particle_steps_per_second, p.neighbors, p.boundary_prepass,
-                         p.boundary - p.boundary_prepass, p.density, p.forces, p.integrate,
-                         m.bytes_held / m.fluid, m.peak_rss_bytes);
+      csv << fmt::format(
+          "{},{},{},{:.1f},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},"
+          "{:.1f},{:.0f}\n",
+          m.name, m.threads, m.fluid, m.interacting, m.steps, m.seconds,
+          m.particle_steps_per_second, p.neighbors, p.boundary_prepass,
+          p.boundary - p.boundary_prepass, p.density, p.forces, p.integrate, m.bytes_held / m.fluid,
+          m.peak_rss_bytes);
     }
   }
 
@@ -235,10 +262,10 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
     md << fmt::format(
         "| {} | {} | {:.0f} | {:.3g} | {:.0f} % | {:.0f} % | {:.0f} % | {:.0f} % | {:.0f} % | "
         "{:.0f} % | {:.0f} |\n",
-        m.name, m.threads, m.interacting, m.particle_steps_per_second,
-        100 * share(m, p.neighbors), 100 * share(m, p.boundary_prepass),
-        100 * share(m, p.boundary - p.boundary_prepass), 100 * share(m, p.density),
-        100 * share(m, p.forces), 100 * share(m, p.integrate), m.bytes_held / m.fluid);
+        m.name, m.threads, m.interacting, m.particle_steps_per_second, 100 * share(m, p.neighbors),
+        100 * share(m, p.boundary_prepass), 100 * share(m, p.boundary - p.boundary_prepass),
+        100 * share(m, p.density), 100 * share(m, p.forces), 100 * share(m, p.integrate),
+        m.bytes_held / m.fluid);
   }
   md << "\nPhases: `pre-pass` is BoundaryModel::prepare (ghost generation, or gamma and the "
         "element lists of boundary integrals); `wall terms` the wall accelerations; the wall "
@@ -246,8 +273,7 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
   md << "\nBytes held: particle fields (capacity) + fluid cell list + the solver's scratch + "
         "the re-sort buffers; boundary models' own arrays are not included (peak RSS of the "
         "whole study process: "
-     << fmt::format("{:.0f} MB", peak_rss_bytes() / 1e6)
-     << ").\n\n![throughput](throughput.png)\n";
+     << fmt::format("{:.0f} MB", peak_rss_bytes() / 1e6) << ").\n\n![throughput](throughput.png)\n";
   return r;
 }
 

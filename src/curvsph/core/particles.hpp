@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "curvsph/core/types.hpp"
@@ -61,6 +62,18 @@ struct Particles {
   void for_each_field(F&& f) const {
     const_cast<Particles*>(this)->for_each_field(
         [&](const char* name, const auto& data) { f(name, data); });
+  }
+
+  // Bytes held by the fields (capacity, not size) plus the re-sort scratch that permute()
+  // keeps alive after its first call: one buffer of n elements per field element type
+  // (Vec, Real, int32, int64).
+  std::size_t bytes() const {
+    std::size_t b = 0;
+    for_each_field([&](const char*, const auto& data) {
+      b += data.capacity() * sizeof(typename std::decay_t<decltype(data)>::value_type);
+    });
+    return b +
+           size() * (sizeof(Vec<D>) + sizeof(Real) + sizeof(std::int32_t) + sizeof(std::int64_t));
   }
 
   // Reorder every field: new[k] = old[order[k]].

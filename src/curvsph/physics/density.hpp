@@ -13,6 +13,7 @@
 #include "curvsph/core/particles.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/physics/pair_factors.hpp"
 
 namespace curvsph {
 
@@ -28,17 +29,21 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
 }
 
 // The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho.
+// `pf` is the caller's reusable scratch (its volumes are filled here).
 template <int D>
 void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
-                                   const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho) {
+                                   const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho,
+                                   PairFactors<D>& pf) {
   grad_rho.resize(P.size());
+  pf.fill_volume(P);
+  const Real* V = pf.volume.data();
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     Mat<D> M = Mat<D>::Zero();
     Vec<D> g = Vec<D>::Zero();
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Vec<D> gradW = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
-      const Real Vj = P.mass[j] / P.rho[j];
+      const Real Vj = V[j];
       M.noalias() -= Vj * gradW * r.transpose();  // grad W (x) (x_j - x_i), x_j - x_i = -r
       g += Vj * (P.rho[j] - P.rho[i]) * gradW;
     });
@@ -48,17 +53,27 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
   });
 }
 
+template <int D>
+void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
+                                   const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho) {
+  PairFactors<D> pf;
+  renormalised_density_gradient(P, cells, W, grad_rho, pf);
+}
+
 // Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
-// is the renormalised gradient, or nullptr when delta = 0.
+// is the renormalised gradient, or nullptr when delta = 0. `pf` is the caller's reusable
+// scratch (its volumes are filled here).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho) {
+                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf) {
+  pf.fill_volume(P);
+  const Real* V = pf.volume.data();
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     Real div = 0, diff = 0;
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
-      const Real Vj = P.mass[j] / P.rho[j];
+      const Real Vj = V[j];
       div += Vj * f * (P.v[i] - P.v[j]).dot(r);
       if (grad_rho) {
         const Vec<D> psi = -2 * (P.rho[j] - P.rho[i]) * r / r2 - ((*grad_rho)[i] + (*grad_rho)[j]);
@@ -67,6 +82,13 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
     });
     P.drho[i] = P.rho[i] * div + delta_h_c0 * diff;
   });
+}
+
+template <int D>
+void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho) {
+  PairFactors<D> pf;
+  continuity_rate(P, cells, W, delta_h_c0, grad_rho, pf);
 }
 
 }  // namespace curvsph

@@ -13,6 +13,7 @@
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
+#include "curvsph/physics/pair_factors.hpp"
 
 namespace curvsph {
 
@@ -26,29 +27,40 @@ void update_pressure(Particles<D>& P, const FluidParams<D>& F) {
 
 // Pair accelerations (pressure gradient and viscosity) of every particle; body forces are
 // added by body_forces() after the wall terms.
+// `pf` is the caller's reusable scratch (filled here).
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                  const FluidParams<D>& F) {
+                  const FluidParams<D>& F, PairFactors<D>& pf) {
+  pf.fill_forces(P, F);
+  const Real* inv_s2 = pf.inv_s2.data();
+  const Real* p_s2 = pf.p_s2.data();
+  const Real* mu = pf.mu.data();
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
-    const Real si = P.sigma[i];
-    const Real inv_si2 = 1 / (si * si);
-    const Real pi_s2 = P.p[i] * inv_si2;
-    const Real mu_i = F.viscosity[P.phase[i]];
+    const Real inv_si2 = inv_s2[i];
+    const Real pi_s2 = p_s2[i];
+    const Real mu_i = mu[i];
+    const Vec<D> vi = P.v[i];
     Vec<D> grad_p = Vec<D>::Zero();
     Vec<D> visc = Vec<D>::Zero();
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
-      const Real sj = P.sigma[j];
-      const Real inv_sj2 = 1 / (sj * sj);
-      grad_p += (P.p[j] * inv_sj2 + pi_s2) * f * r;
-      const Real mu_j = F.viscosity[P.phase[j]];
+      grad_p += (p_s2[j] + pi_s2) * f * r;
+      const Real mu_j = mu[j];
       const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
-      visc += mu_ij * (inv_sj2 + inv_si2) * f * (P.v[i] - P.v[j]);
+      visc += mu_ij * (inv_s2[j] + inv_si2) * f * (vi - P.v[j]);
     });
     const Real inv_m = 1 / P.mass[i];
     P.a[i] = -inv_m * grad_p + inv_m * visc;
   });
+}
+
+// Convenience form with its own scratch (allocates: tests and one-off calls).
+template <int D>
+void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                  const FluidParams<D>& F) {
+  PairFactors<D> pf;
+  fluid_forces(P, cells, W, F, pf);
 }
 
 // Gravity and Vela Vela's driving term (eq. 36), added after the pair and wall terms.

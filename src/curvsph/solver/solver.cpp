@@ -106,6 +106,7 @@ template <int D>
 void Solver<D>::compute_rates(Real dt_rho) {
   if (boundary_) {
     Stopwatch sw{times_.boundary};
+    Stopwatch sw_prepass{times_.boundary_prepass};
     boundary_->prepare(P_, t_);
     // Owned particles only: a halo copy that went through a wall is its owner's report.
     std::vector<Index> through;
@@ -131,11 +132,11 @@ void Solver<D>::compute_rates(Real dt_rho) {
       if (dt_rho > 0) {
         const bool delta = F_.delta_sph > 0;
         if (delta) {
-          renormalised_density_gradient(P_, cells_, W_, grad_rho_);
+          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_);
           decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
         }
         continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
-                        delta ? &grad_rho_ : nullptr);
+                        delta ? &grad_rho_ : nullptr, pair_);
         if (boundary_) boundary_->add_density_rate(P_);
         parallel_for(static_cast<Index>(P_.size()),
                      [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
@@ -149,7 +150,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   {
     Stopwatch sw{times_.forces};
-    fluid_forces(P_, cells_, W_, F_);
+    fluid_forces(P_, cells_, W_, F_, pair_);
     if (!case_.surface_tension.empty()) {
       const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
                                             boundary_ ? boundary_->images() : WallImages<D>{},
@@ -178,6 +179,15 @@ void Solver<D>::initialize() {
   build_neighbors();
   compute_rates(0);
   check_state();
+}
+
+template <int D>
+std::size_t Solver<D>::bytes_held() const {
+  auto held = [](const auto& v) {
+    return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
+  };
+  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + held(shift_) +
+         held(shift_dv_) + held(shift_drho_) + held(order_);
 }
 
 template <int D>

@@ -13,6 +13,7 @@
 #include "curvsph/neighbors/cell_list.hpp"
 #include "curvsph/parallel/decomposition.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
+#include "curvsph/physics/pair_factors.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/relax.hpp"
 
@@ -21,6 +22,10 @@ namespace curvsph {
 // Seconds spent per phase (DESIGN.md §6: measure, then optimise).
 struct PhaseTimes {
   double neighbors = 0, boundary = 0, density = 0, forces = 0, integrate = 0, output = 0;
+  // The boundary pre-pass (BoundaryModel::prepare: ghost generation, or the Shepard factor
+  // gamma of boundary integrals); a part of `boundary`, reported on its own because the
+  // performance targets name it.
+  double boundary_prepass = 0;
 };
 
 template <int D>
@@ -53,6 +58,10 @@ class Solver {
   // The set-up relaxation (setup.relax), when the case asks for one.
   const std::optional<RelaxResult>& relax_result() const { return relax_; }
 
+  // Bytes held by the particle fields, the fluid cell list and the solver's own per-particle
+  // scratch (boundary models not included: they do not expose theirs).
+  std::size_t bytes_held() const;
+
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
   // Throws InstabilityError on NaN or density outside [0.5, 2] rho0 (on every rank when
@@ -77,6 +86,7 @@ class Solver {
   Decomposition<D> decomp_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
+  PairFactors<D> pair_;  // per-particle factors of the pair sums, reused every step
   SurfaceTensionScratch<D> surface_scratch_;
   std::vector<Vec<D>> shift_, shift_dv_;
   std::vector<Real> shift_drho_;

@@ -16,6 +16,7 @@ StudyResult run_dam_break_study(const StudyContext& ctx);         // dam_break_s
 StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cost_study.cpp
 StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_study.cpp
 StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wall_study.cpp
+StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -48,6 +49,9 @@ const std::vector<Study>& validation_studies() {
       {"droplet_wall",
        "Drop on a NURBS wall with a dip, contact angle 30-120 deg (Barker §4.2, Fig. 10)",
        &run_droplet_wall_study},
+      {"throughput",
+       "Particle-steps per second: 3-D dam break (DualSPHysics reference), 10^6 box, Couette",
+       &run_throughput_study},
   };
   return studies;
 }

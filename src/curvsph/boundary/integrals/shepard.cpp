@@ -46,12 +46,13 @@ struct GaussRule {
   std::vector<double> x, w;
 };
 const GaussRule& gauss_rule(int n) {
-  static std::mutex mutex;
-  static std::vector<GaussRule> cache(33);
+  // One once_flag per rule rather than a mutex: the solver asks for the rule for every
+  // particle near a wall, every step, and after the first call this is a lock-free check.
+  static std::array<std::once_flag, 33> once;
+  static std::array<GaussRule, 33> cache;
   n = std::clamp(n, 1, 32);
-  std::lock_guard lock(mutex);
   GaussRule& r = cache[static_cast<std::size_t>(n)];
-  if (r.x.empty()) {
+  std::call_once(once[static_cast<std::size_t>(n)], [&] {
     r.x.resize(static_cast<std::size_t>(n));
     r.w.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
@@ -71,7 +72,7 @@ const GaussRule& gauss_rule(int n) {
       r.x[static_cast<std::size_t>(i)] = 0.5 * (1 - z);
       r.w[static_cast<std::size_t>(i)] = 1.0 / ((1 - z * z) * dp * dp);  // 2/((1-z^2)P'^2) / 2
     }
-  }
+  });
   return r;
 }
 
@@ -334,10 +335,11 @@ double element_parts(const BoundaryElements<D>& el, std::span<const std::size_t>
 // `skip_far`: leave out elements whose exact distance is >= 2h (GeometricShepard);
 // `parts_of(near, x, xs)`: the sum over the elements `near` of the singular part (angle /
 // solid angle over the sphere's measure, seen from xs) and the polynomial part (at x).
+// `radius`: el.bounding_radius(j) for every j, tabulated (GeometricShepard), or null.
 template <int D, class ForEach, class Parts>
 double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                       const ShepardQuadrature& quad, const ForEach& for_each, bool skip_far,
-                      const Parts& poly_of) {
+                      const Parts& poly_of, const double* radius = nullptr) {
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
@@ -347,8 +349,21 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
   touched.clear();
   VecD<D> mean_normal = VecD<D>::Zero();
   double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
+  // Far from touching: the element lies in the ball of its bounding radius rb about its
+  // centre, so its distance d is in [rc - rb, rc + rb]; when that interval is clear of the
+  // on-wall band (tol, or gap + tol) and, with skip_far, inside the support, no decision
+  // below depends on d and the exact distance is not computed (most elements of a particle
+  // one or more rows from the wall). The margins cover the round-off of rc - rb and rc + rb.
+  const double margin = 1e-12 * support;
   for_each([&](std::size_t j) {
-    if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) return;
+    const double rc = (el.centre[j] - x).norm();
+    const double rb = radius ? radius[j] : el.bounding_radius(j);
+    if (rc - rb >= support) return;
+    const double band = tol + (j < el.gap.size() ? std::max(el.gap[j], 0.0) : 0.0);
+    if (rc - rb > band + margin && (!skip_far || rc + rb < support - margin)) {
+      near.push_back(j);
+      return;
+    }
     const double d = element_distance(el, j, x);
     if (skip_far && d >= support) return;
     near.push_back(j);
@@ -417,6 +432,8 @@ template <int D>
 GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
                                       const ShepardQuadrature& quad)
     : h_(h), quad_(quad) {
+  radius_.resize(el.size());
+  for (std::size_t j = 0; j < el.size(); ++j) radius_[j] = el.bounding_radius(j);
   if constexpr (D == 3) {
     // Twins: an edge b -> a of another element in the same plane with the same normal
     // cancels this element's a -> b term exactly (operator() below). Vertices are matched
@@ -490,7 +507,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         el, x, h_, quad_, for_each, true,
         [&](std::span<const std::size_t> near, const Vec2d& y, const Vec2d& ys) {
           return element_parts(el, near, y, ys, F, quad_);
-        });
+        },
+        radius_.data());
   } else {
     // Polynomial part of a planar polygon, exact in the radial direction. With f the foot of
     // y on the polygon's plane, d = n.(v0 - y) and q-units (lengths / h):
@@ -587,7 +605,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       }
       return total;
     };
-    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts);
+    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts, radius_.data());
   }
 }
 

@@ -103,7 +103,9 @@
 //
 // 7. gamma: geometric / monolithic from the elements near the particle (a cell list over
 //    element centres with radius 2h + the largest element radius, so the cost scales with
-//    the particles near walls); volume: sum_j W_ij V_j over fluid particles (every particle,
+//    the particles near walls; the pairs with W_ib != 0 are kept from prepare() for the wall
+//    terms of 3.-5., and only elements with a particle within 2h get a wall pressure);
+//    volume: sum_j W_ij V_j over fluid particles (every particle,
 //    free surface included: that is the "traditional" factor the paper compares against);
 //    none: 1.
 //
@@ -239,7 +241,8 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       for_each_element(x, [&](Index b, const Vec<D>& r, Real r2) {
         idx.push_back(static_cast<std::size_t>(b));
         shift.push_back(x - r - ex_[b]);
-        if (r2 < active2) std::atomic_ref<unsigned char>(active_[b]).store(1, std::memory_order_relaxed);
+        if (r2 < active2)
+          std::atomic_ref<unsigned char>(active_[b]).store(1, std::memory_order_relaxed);
         const Real w = W_.value(std::sqrt(r2));
         if (w != 0) buf.push_back({b, r, w});
       });
@@ -265,9 +268,8 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
         case ShepardMode::monolithic: {
           if (idx.empty()) break;
           auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
-            return mode_ == ShepardMode::geometric
-                       ? geometric_(el_, cand, xs)
-                       : shepard_monolithic<D>(el_, cand, xs, h, quad_);
+            return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
+                                                   : shepard_monolithic<D>(el_, cand, xs, h, quad_);
           };
           const Real tol = Real(1e-6) * W_.h;
           const bool unshifted = std::all_of(shift.begin(), shift.end(),

@@ -514,8 +514,8 @@ inline void rim_values(const double* x, std::size_t n, double t0, double dl, dou
     const __m128d t = _mm_add_pd(vt0, _mm_mul_pd(_mm_loadu_pd(x + i), vdl));
     const __m128d s = _mm_add_pd(vp2, _mm_mul_pd(t, t));
     const __m128d q = _mm_sqrt_pd(_mm_add_pd(vd2, s));
-    const __m128d outer = _mm_div_pd(
-        _mm_sub_pd(_mm_set1_pd(0.375), _mm_div_pd(_mm_set1_pd(0.25), q)), vpi);
+    const __m128d outer =
+        _mm_div_pd(_mm_sub_pd(_mm_set1_pd(0.375), _mm_div_pd(_mm_set1_pd(0.25), q)), vpi);
     const __m128d q2 = _mm_mul_pd(q, q);
     __m128d in = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(3.0 / 1024.0), q), _mm_set1_pd(15.0 / 512.0));
     in = _mm_add_pd(_mm_mul_pd(in, q), _mm_set1_pd(7.0 / 64.0));

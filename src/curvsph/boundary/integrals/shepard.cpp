@@ -339,11 +339,14 @@ double element_parts(const BoundaryElements<D>& el, std::span<const std::size_t>
 // `skip_far`: leave out elements whose exact distance is >= 2h (GeometricShepard);
 // `parts_of(near, x, xs)`: the sum over the elements `near` of the singular part (angle /
 // solid angle over the sphere's measure, seen from xs) and the polynomial part (at x).
-// `radius`: el.bounding_radius(j) for every j, tabulated (GeometricShepard), or null.
+// `radius`: el.bounding_radius(j) for every j, tabulated (GeometricShepard), or null;
+// `reach`: with it, a bound on d(x, element j) - |x - centre_j| (about 0 where the centre
+// lies on the element, else the bounding radius), or null for the bounding radius.
 template <int D, class ForEach, class Parts>
 double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                       const ShepardQuadrature& quad, const ForEach& for_each, bool skip_far,
-                      const Parts& poly_of, const double* radius = nullptr) {
+                      const Parts& poly_of, const double* radius = nullptr,
+                      const double* reach = nullptr) {
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
@@ -354,7 +357,8 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
   VecD<D> mean_normal = VecD<D>::Zero();
   double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
   // Far from touching: the element lies in the ball of its bounding radius rb about its
-  // centre, so its distance d is in [rc - rb, rc + rb]; when that interval is clear of the
+  // centre, so its distance d is in [rc - rb, rc + rb] (at most rc where the centre lies on
+  // the element: flat polygons); when that interval is clear of the
   // on-wall band (tol, or gap + tol) and, with skip_far, inside the support, no decision
   // below depends on d and the exact distance is not computed (most elements of a particle
   // one or more rows from the wall). The margins cover the round-off of rc - rb and rc + rb.
@@ -364,7 +368,8 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
     const double rb = radius ? radius[j] : el.bounding_radius(j);
     if (rc - rb >= support) return;
     const double band = tol + (j < el.gap.size() ? std::max(el.gap[j], 0.0) : 0.0);
-    if (rc - rb > band + margin && (!skip_far || rc + rb < support - margin)) {
+    const double ub = rc + (reach ? reach[j] : rb);
+    if (rc - rb > band + margin && (!skip_far || ub < support - margin)) {
       near.push_back(j);
       return;
     }
@@ -437,7 +442,18 @@ GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
                                       const ShepardQuadrature& quad)
     : h_(h), quad_(quad) {
   radius_.resize(el.size());
-  for (std::size_t j = 0; j < el.size(); ++j) radius_[j] = el.bounding_radius(j);
+  reach_.resize(el.size());
+  for (std::size_t j = 0; j < el.size(); ++j) {
+    radius_[j] = el.bounding_radius(j);
+    reach_[j] = radius_[j];
+    if constexpr (D == 3) {
+      // A flat polygon whose centre projects into it (the centroid of a convex one):
+      // d(x) <= |x - c'| <= |x - c| + |c - c'|, c' the centre's foot on the plane.
+      const bool flat = j >= el.gap.size() || el.gap[j] == 0.0;
+      const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
+      if (flat && point_in_polygon(el, j, el.centre[j], 0.0)) reach_[j] = std::min(off, reach_[j]);
+    }
+  }
   if constexpr (D == 3) {
     // Twins: an edge b -> a of another element in the same plane with the same normal
     // cancels this element's a -> b term exactly (operator() below). Vertices are matched
@@ -645,7 +661,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       }
       return total;
     };
-    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts, radius_.data());
+    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts, radius_.data(),
+                             reach_.data());
   }
 }
 

@@ -103,7 +103,9 @@
 //
 // 7. gamma: geometric / monolithic from the elements near the particle (a cell list over
 //    element centres with radius 2h + the largest element radius, so the cost scales with
-//    the particles near walls); volume: sum_j W_ij V_j over fluid particles (every particle,
+//    the particles near walls; the pairs with W_ib != 0 are kept from prepare() for the wall
+//    terms of 3.-5., and only elements with a particle within 2h get a wall pressure);
+//    volume: sum_j W_ij V_j over fluid particles (every particle,
 //    free surface included: that is the "traditional" factor the paper compares against);
 //    none: 1.
 //
@@ -114,9 +116,11 @@
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/error.hpp"
@@ -211,71 +215,108 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
   near_.resize(P.size());
   wall_dist_.resize(P.size());
   wall_normal_.resize(P.size());
+  pair_start_.resize(P.size() + 1);
+  pair_local_.resize(P.size());
+  active_.assign(ex_.size(), 0);
   const double h = W_.h;
-  parallel_for(n, [&](Index i) {
-    const Vec<D>& x = P.x[i];
-    // Candidate elements, with the periodic image shift of each (x_b image = x_b + s).
-    thread_local std::vector<std::size_t> idx;
-    thread_local std::vector<Vec<D>> shift;
-    idx.clear();
-    shift.clear();
-    for_each_element(x, [&](Index b, const Vec<D>& r, Real) {
-      idx.push_back(static_cast<std::size_t>(b));
-      shift.push_back(x - r - ex_[b]);
-    });
-    near_[i] = !idx.empty();
-    if (near_[i]) {
-      const WallPoint<D> wp = walls_.closest(x.template cast<double>());
-      wall_dist_[i] = static_cast<Real>(wp.distance);
-      wall_normal_[i] = wp.normal.template cast<Real>();
-    }
-    Real g = 1;
-    switch (mode_) {
-      case ShepardMode::volume: {
-        Real s = 0;
-        fluid_cells_.for_each_neighbor(x, P.x, [&](Index j, const Vec<D>&, Real r2) {
-          s += W_.value(std::sqrt(r2)) * P.mass[j] / P.rho[j];
-        });
-        g = s;
-        break;
+  // An element is active (its wall pressure is extrapolated) when a particle lies within 2h;
+  // the margin covers the round-off between this separation and the fluid cell list's, so
+  // that no element with fluid in its support is left at p_b = 0.
+  const Real active2 = W_.support2 * (1 + Real(1e-9));
+#pragma omp parallel
+  {
+#pragma omp single
+    thread_pairs_.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<Pair>& buf = thread_pairs_[static_cast<std::size_t>(omp_get_thread_num())];
+    buf.clear();
+#pragma omp for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      const Vec<D>& x = P.x[i];
+      // Candidate elements, with the periodic image shift of each (x_b image = x_b + s).
+      thread_local std::vector<std::size_t> idx;
+      thread_local std::vector<Vec<D>> shift;
+      idx.clear();
+      shift.clear();
+      const Index first = static_cast<Index>(buf.size());
+      for_each_element(x, [&](Index b, const Vec<D>& r, Real r2) {
+        idx.push_back(static_cast<std::size_t>(b));
+        shift.push_back(x - r - ex_[b]);
+        if (r2 < active2)
+          std::atomic_ref<unsigned char>(active_[b]).store(1, std::memory_order_relaxed);
+        const Real w = W_.value(std::sqrt(r2));
+        if (w != 0) buf.push_back({b, r, w});
+      });
+      pair_local_[i] = first;
+      pair_start_[i + 1] = static_cast<Index>(buf.size()) - first;  // count; prefix-summed below
+      near_[i] = !idx.empty();
+      if (near_[i]) {
+        const WallPoint<D> wp = walls_.closest(x.template cast<double>());
+        wall_dist_[i] = static_cast<Real>(wp.distance);
+        wall_normal_[i] = wp.normal.template cast<Real>();
       }
-      case ShepardMode::geometric:
-      case ShepardMode::monolithic: {
-        if (idx.empty()) break;
-        auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
-          return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
-                                                 : shepard_monolithic<D>(el_, cand, xs, h, quad_);
-        };
-        const Real tol = Real(1e-6) * W_.h;
-        const bool unshifted = std::all_of(shift.begin(), shift.end(),
-                                           [&](const Vec<D>& s) { return s.norm() < tol; });
-        if (unshifted) {
-          g = static_cast<Real>(eval(idx, x.template cast<double>()));
+      Real g = 1;
+      switch (mode_) {
+        case ShepardMode::volume: {
+          Real s = 0;
+          fluid_cells_.for_each_neighbor(x, P.x, [&](Index j, const Vec<D>&, Real r2) {
+            s += W_.value(std::sqrt(r2)) * P.mass[j] / P.rho[j];
+          });
+          g = s;
           break;
         }
-        // Elements seen through periodic images: 1 - gamma is additive over elements, so
-        // each image group contributes 1 - gamma(x - s) over its own elements.
-        thread_local std::vector<std::size_t> group;
-        std::vector<unsigned char> done(idx.size(), 0);
-        double sum = 1;
-        for (std::size_t k = 0; k < idx.size(); ++k) {
-          if (done[k]) continue;
-          group.clear();
-          for (std::size_t l = k; l < idx.size(); ++l)
-            if (!done[l] && (shift[l] - shift[k]).norm() < tol) {
-              group.push_back(idx[l]);
-              done[l] = 1;
-            }
-          sum -= 1 - eval(group, (x - shift[k]).template cast<double>());
+        case ShepardMode::geometric:
+        case ShepardMode::monolithic: {
+          if (idx.empty()) break;
+          auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
+            return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
+                                                   : shepard_monolithic<D>(el_, cand, xs, h, quad_);
+          };
+          const Real tol = Real(1e-6) * W_.h;
+          const bool unshifted = std::all_of(shift.begin(), shift.end(),
+                                             [&](const Vec<D>& s) { return s.norm() < tol; });
+          if (unshifted) {
+            g = static_cast<Real>(eval(idx, x.template cast<double>()));
+            break;
+          }
+          // Elements seen through periodic images: 1 - gamma is additive over elements, so
+          // each image group contributes 1 - gamma(x - s) over its own elements.
+          thread_local std::vector<std::size_t> group;
+          thread_local std::vector<unsigned char> done;
+          done.assign(idx.size(), 0);
+          double sum = 1;
+          for (std::size_t k = 0; k < idx.size(); ++k) {
+            if (done[k]) continue;
+            group.clear();
+            for (std::size_t l = k; l < idx.size(); ++l)
+              if (!done[l] && (shift[l] - shift[k]).norm() < tol) {
+                group.push_back(idx[l]);
+                done[l] = 1;
+              }
+            sum -= 1 - eval(group, (x - shift[k]).template cast<double>());
+          }
+          g = static_cast<Real>(sum);
+          break;
         }
-        g = static_cast<Real>(sum);
-        break;
+        case ShepardMode::none:
+          break;
       }
-      case ShepardMode::none:
-        break;
+      gamma_[i] = g;
     }
-    gamma_[i] = g;
-  });
+    // Gather the thread buffers into pairs_ (particle order). The implicit barrier of the
+    // loop above has all counts in place.
+#pragma omp single
+    {
+      pair_start_[0] = 0;
+      for (Index i = 0; i < n; ++i) pair_start_[i + 1] += pair_start_[i];
+      pairs_.resize(static_cast<std::size_t>(pair_start_[n]));
+    }
+    // Same static schedule and trip count as the loop above: each thread copies its own
+    // particles' pairs.
+#pragma omp for schedule(static)
+    for (Index i = 0; i < n; ++i)
+      std::copy_n(buf.begin() + pair_local_[i], pair_start_[i + 1] - pair_start_[i],
+                  pairs_.begin() + pair_start_[i]);
+  }
   penetrated_.clear();
   for (Index i = 0; i < n; ++i)
     if (near_[i] && wall_dist_[i] <= 0) penetrated_.push_back(i);
@@ -290,15 +331,19 @@ void IntegralsBoundary<D>::add_density(Particles<D>& P) {
 }
 
 template <int D>
+void IntegralsBoundary<D>::check_prepared(const Particles<D>& P) const {
+  if (pair_start_.size() != P.size() + 1)
+    throw std::logic_error("IntegralsBoundary: prepare() must run on these particles first");
+}
+
+template <int D>
 void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
+  check_prepared(P);
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     Real wall = 0;
-    if (near_[i]) {
-      for_each_element(P.x[i], [&](Index b, const Vec<D>&, Real r2) {
-        const Real w = W_.value(std::sqrt(r2));
-        if (w == 0) return;
-        wall += (P.v[i] - eu_[b]).dot(en_[b]) * w * ea_[b];
-      });
+    for (Index k = pair_start_[i]; k < pair_start_[i + 1]; ++k) {
+      const Pair& q = pairs_[static_cast<std::size_t>(k)];
+      wall += (P.v[i] - eu_[q.b]).dot(en_[q.b]) * q.w * ea_[q.b];
     }
     P.drho[i] = (P.drho[i] - P.rho[i] * wall) / gamma_[i];
   });
@@ -306,9 +351,14 @@ void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
 
 template <int D>
 void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
+  check_prepared(P);
   // Wall pressure of every element with fluid around it (item 3 of the header comment).
   const Vec<D> g = F_.gravity;
   parallel_for(static_cast<Index>(ex_.size()), [&](Index b) {
+    if (!active_[b]) {  // no particle within 2h: den would be 0 (prepare())
+      p_wall_[b] = 0;
+      return;
+    }
     Real num = 0, den = 0;
     fluid_cells_.for_each_neighbor(ex_[b], P.x, [&](Index j, const Vec<D>& r, Real r2) {
       const Real wv = W_.value(std::sqrt(r2)) * P.mass[j] / P.rho[j];
@@ -326,14 +376,14 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     if (!near_[i]) return;
     const Real mu = F_.viscosity[P.phase[i]];
     Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
-    for_each_element(P.x[i], [&](Index b, const Vec<D>& r, Real r2) {
-      const Real w = W_.value(std::sqrt(r2));
-      if (w == 0) return;
-      const Real wa = w * ea_[b];
+    for (Index k = pair_start_[i]; k < pair_start_[i + 1]; ++k) {
+      const Pair& q = pairs_[static_cast<std::size_t>(k)];
+      const Index b = q.b;
+      const Real wa = q.w * ea_[b];
       fp += (p_wall_[b] + P.p[i]) * wa * en_[b];
       wn += wa * en_[b];
-      fv += (P.v[i] - eu_[b]) * (wa / std::max(r.dot(en_[b]), dn_min));
-    });
+      fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
+    }
     if (consistent_) {
       // Item 2b: remove p_i times the discrete residual of the constant-field identity.
       const Real si = P.sigma[i];

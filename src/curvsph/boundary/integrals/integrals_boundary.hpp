@@ -42,6 +42,8 @@ class IntegralsBoundary final : public BoundaryModel<D> {
 
  private:
   void build_elements(const Particles<D>& P);
+  // The pair list of prepare() must belong to the particles passed to the wall passes.
+  void check_prepared(const Particles<D>& P) const;
   // Calls f(b, r_ib = x_i - x_b (periodic image applied), r2) for the elements whose
   // centre is within the candidate radius 2h + (largest element radius) of x.
   template <class F>
@@ -73,6 +75,24 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   std::vector<unsigned char> near_;  // particle has elements within the candidate radius
   std::vector<Real> wall_dist_;      // distance to the nearest wall (near particles only)
   std::vector<Vec<D>> wall_normal_;
+
+  // Particle-element pairs with W_ib != 0, found once per step in prepare() and reused by
+  // add_density_rate() and add_accelerations() (the element search was done three times a
+  // step before). Pairs of particle i: pairs_[pair_start_[i] .. pair_start_[i + 1]), in the
+  // order the element cell list visits them, so every wall sum adds in the same order as a
+  // fresh search would. All buffers keep their capacity from step to step.
+  struct Pair {
+    Index b;   // element
+    Vec<D> r;  // r_ib = x_i - x_b (periodic image applied)
+    Real w;    // W(|r_ib|) > 0
+  };
+  std::vector<Pair> pairs_;
+  std::vector<Index> pair_start_;                // size n + 1
+  std::vector<Index> pair_local_;                // first pair of i in its thread's buffer
+  std::vector<std::vector<Pair>> thread_pairs_;  // per-thread pairs before the gather
+  // Elements with a particle within 2h (plus round-off): the only ones whose wall pressure
+  // has fluid to extrapolate from; the others keep p_b = 0 without a fluid search.
+  std::vector<unsigned char> active_;
 };
 
 template <int D>

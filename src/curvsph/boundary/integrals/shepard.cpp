@@ -9,6 +9,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "curvsph/kernels/boundary_kernel.hpp"
 #include "curvsph/kernels/wendland.hpp"
 
@@ -46,12 +50,13 @@ struct GaussRule {
   std::vector<double> x, w;
 };
 const GaussRule& gauss_rule(int n) {
-  static std::mutex mutex;
-  static std::vector<GaussRule> cache(33);
+  // One once_flag per rule rather than a mutex: the solver asks for the rule for every
+  // particle near a wall, every step, and after the first call this is a lock-free check.
+  static std::array<std::once_flag, 33> once;
+  static std::array<GaussRule, 33> cache;
   n = std::clamp(n, 1, 32);
-  std::lock_guard lock(mutex);
   GaussRule& r = cache[static_cast<std::size_t>(n)];
-  if (r.x.empty()) {
+  std::call_once(once[static_cast<std::size_t>(n)], [&] {
     r.x.resize(static_cast<std::size_t>(n));
     r.w.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
@@ -71,7 +76,7 @@ const GaussRule& gauss_rule(int n) {
       r.x[static_cast<std::size_t>(i)] = 0.5 * (1 - z);
       r.w[static_cast<std::size_t>(i)] = 1.0 / ((1 - z * z) * dp * dp);  // 2/((1-z^2)P'^2) / 2
     }
-  }
+  });
   return r;
 }
 
@@ -334,10 +339,14 @@ double element_parts(const BoundaryElements<D>& el, std::span<const std::size_t>
 // `skip_far`: leave out elements whose exact distance is >= 2h (GeometricShepard);
 // `parts_of(near, x, xs)`: the sum over the elements `near` of the singular part (angle /
 // solid angle over the sphere's measure, seen from xs) and the polynomial part (at x).
+// `radius`: el.bounding_radius(j) for every j, tabulated (GeometricShepard), or null;
+// `reach`: with it, a bound on d(x, element j) - |x - centre_j| (about 0 where the centre
+// lies on the element, else the bounding radius), or null for the bounding radius.
 template <int D, class ForEach, class Parts>
 double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                       const ShepardQuadrature& quad, const ForEach& for_each, bool skip_far,
-                      const Parts& poly_of) {
+                      const Parts& poly_of, const double* radius = nullptr,
+                      const double* reach = nullptr) {
   const double support = 2.0 * h;
   const double tol = quad.on_wall_tolerance * h;
   // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
@@ -347,8 +356,23 @@ double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
   touched.clear();
   VecD<D> mean_normal = VecD<D>::Zero();
   double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
+  // Far from touching: the element lies in the ball of its bounding radius rb about its
+  // centre, so its distance d is in [rc - rb, rc + rb] (at most rc where the centre lies on
+  // the element: flat polygons); when that interval is clear of the
+  // on-wall band (tol, or gap + tol) and, with skip_far, inside the support, no decision
+  // below depends on d and the exact distance is not computed (most elements of a particle
+  // one or more rows from the wall). The margins cover the round-off of rc - rb and rc + rb.
+  const double margin = 1e-12 * support;
   for_each([&](std::size_t j) {
-    if ((el.centre[j] - x).norm() - el.bounding_radius(j) >= support) return;
+    const double rc = (el.centre[j] - x).norm();
+    const double rb = radius ? radius[j] : el.bounding_radius(j);
+    if (rc - rb >= support) return;
+    const double band = tol + (j < el.gap.size() ? std::max(el.gap[j], 0.0) : 0.0);
+    const double ub = rc + (reach ? reach[j] : rb);
+    if (rc - rb > band + margin && (!skip_far || ub < support - margin)) {
+      near.push_back(j);
+      return;
+    }
     const double d = element_distance(el, j, x);
     if (skip_far && d >= support) return;
     near.push_back(j);
@@ -417,6 +441,19 @@ template <int D>
 GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
                                       const ShepardQuadrature& quad)
     : h_(h), quad_(quad) {
+  radius_.resize(el.size());
+  reach_.resize(el.size());
+  for (std::size_t j = 0; j < el.size(); ++j) {
+    radius_[j] = el.bounding_radius(j);
+    reach_[j] = radius_[j];
+    if constexpr (D == 3) {
+      // A flat polygon whose centre projects into it (the centroid of a convex one):
+      // d(x) <= |x - c'| <= |x - c| + |c - c'|, c' the centre's foot on the plane.
+      const bool flat = j >= el.gap.size() || el.gap[j] == 0.0;
+      const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
+      if (flat && point_in_polygon(el, j, el.centre[j], 0.0)) reach_[j] = std::min(off, reach_[j]);
+    }
+  }
   if constexpr (D == 3) {
     // Twins: an edge b -> a of another element in the same plane with the same normal
     // cancels this element's a -> b term exactly (operator() below). Vertices are matched
@@ -475,6 +512,44 @@ inline double psi3(double q) {
          pi;
 }
 
+// H(s_i) = [Psi(sqrt(d^2 + s_i)) - Psi0] / s_i at s_i = p^2 + t_i^2, t_i = t0 + x_i dl, for
+// the n Gauss points x of one edge piece (the inner loop of the rim quadrature below, most
+// of the geometric factor's cost). Two points at a time with SSE2 where available: the same
+// IEEE operations in the same order as psi3 (both of its branches evaluated, one selected),
+// so the values are bitwise those of the scalar loop; only the throughput of the square
+// roots and divisions changes.
+inline void rim_values(const double* x, std::size_t n, double t0, double dl, double p, double d2,
+                       double psi0, double* out) {
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  constexpr double pi = std::numbers::pi;
+  const __m128d vt0 = _mm_set1_pd(t0), vdl = _mm_set1_pd(dl), vp2 = _mm_set1_pd(p * p);
+  const __m128d vd2 = _mm_set1_pd(d2), vpsi0 = _mm_set1_pd(psi0), vpi = _mm_set1_pd(pi);
+  const __m128d two = _mm_set1_pd(2.0);
+  for (; i + 1 < n; i += 2) {
+    const __m128d t = _mm_add_pd(vt0, _mm_mul_pd(_mm_loadu_pd(x + i), vdl));
+    const __m128d s = _mm_add_pd(vp2, _mm_mul_pd(t, t));
+    const __m128d q = _mm_sqrt_pd(_mm_add_pd(vd2, s));
+    const __m128d outer =
+        _mm_div_pd(_mm_sub_pd(_mm_set1_pd(0.375), _mm_div_pd(_mm_set1_pd(0.25), q)), vpi);
+    const __m128d q2 = _mm_mul_pd(q, q);
+    __m128d in = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(3.0 / 1024.0), q), _mm_set1_pd(15.0 / 512.0));
+    in = _mm_add_pd(_mm_mul_pd(in, q), _mm_set1_pd(7.0 / 64.0));
+    in = _mm_sub_pd(_mm_mul_pd(in, q), _mm_set1_pd(21.0 / 128.0));
+    in = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(in, q), q), q2);
+    in = _mm_div_pd(_mm_add_pd(in, _mm_mul_pd(_mm_set1_pd(7.0 / 32.0), q2)), vpi);
+    const __m128d far = _mm_cmpge_pd(q, two);
+    const __m128d psi = _mm_or_pd(_mm_and_pd(far, outer), _mm_andnot_pd(far, in));
+    _mm_storeu_pd(out + i, _mm_div_pd(_mm_sub_pd(psi, vpsi0), s));
+  }
+#endif
+  for (; i < n; ++i) {
+    const double t = t0 + x[i] * dl;
+    const double s = p * p + t * t;
+    out[i] = (psi3(std::sqrt(d2 + s)) - psi0) / s;
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -490,7 +565,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         el, x, h_, quad_, for_each, true,
         [&](std::span<const std::size_t> near, const Vec2d& y, const Vec2d& ys) {
           return element_parts(el, near, y, ys, F, quad_);
-        });
+        },
+        radius_.data());
   } else {
     // Polynomial part of a planar polygon, exact in the radial direction. With f the foot of
     // y on the polygon's plane, d = n.(v0 - y) and q-units (lengths / h):
@@ -506,6 +582,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     // reversed edge gives the opposite term): only the rim of the candidate patch of a flat
     // wall face is integrated.
     const GaussRule& g = gauss_rule(2 * quad_.gauss_points);
+    std::array<double, 32> hv;  // H at the Gauss points of one piece (gauss_rule: n <= 32)
     const double inv_h = F.inv_h;
     const double max_piece = quad_.max_piece_over_h;  // in units of h
     auto parts = [&](std::span<const std::size_t> near, const Vec3d& y, const Vec3d& ys) {
@@ -549,7 +626,6 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         if (std::abs(dn) <= 1e-14 * h_) continue;  // y in the element's plane: n.(z - y) = 0
         const Vec3d f = y + dn * n;
         const double d = dn * inv_h, d2 = d * d, psi0 = psi3(std::abs(d));
-        auto H = [&](double s) { return (psi3(std::sqrt(d2 + s)) - psi0) / s; };
         const int m = el.vertex_count[j];
         double sum = 0;
         for (int k = 0; k < m; ++k) {
@@ -575,10 +651,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
             const double dl = len / pieces;
             for (int pc = 0; pc < pieces; ++pc) {
               const double t0 = cuts[c] + pc * dl;
-              for (std::size_t i = 0; i < g.x.size(); ++i) {
-                const double t = t0 + g.x[i] * dl;
-                edge += g.w[i] * dl * H(p * p + t * t);
-              }
+              rim_values(g.x.data(), g.x.size(), t0, dl, p, d2, psi0, hv.data());
+              for (std::size_t i = 0; i < g.x.size(); ++i) edge += g.w[i] * dl * hv[i];
             }
           }
           sum += p * edge;
@@ -587,7 +661,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       }
       return total;
     };
-    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts);
+    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts, radius_.data(),
+                             reach_.data());
   }
 }
 

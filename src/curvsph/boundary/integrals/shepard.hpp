@@ -91,6 +91,8 @@ class GeometricShepard {
   ShepardQuadrature quad_;
   // twin_[4 j + k]: the coplanar element sharing edge k of element j (reversed), or -1 (3-D).
   std::vector<std::int64_t> twin_;
+  std::vector<double> radius_;  // bounding radius of every element (candidate test)
+  std::vector<double> reach_;   // d(x, element) <= |x - centre| + reach (candidate test)
 };
 
 template <int D>

@@ -39,7 +39,7 @@ class Solver {
   // InstabilityError when the state goes bad.
   void step(Real dt_cap = std::numeric_limits<Real>::infinity());
 
-  Real time() const { return t_; }
+  double time() const { return t_; }
   Real dt() const { return dt_; }
   long steps() const { return steps_; }
   Particles<D>& particles() { return P_; }
@@ -91,7 +91,11 @@ class Solver {
   std::vector<Vec<D>> shift_, shift_dv_;
   std::vector<Real> shift_drho_;
   std::vector<std::size_t> order_;
-  Real t_ = 0, dt_ = 0;
+  // The time is accumulated in double even in the float build: in float, t + dt stops
+  // advancing once dt falls below half an ulp of t (3e-8 at t = 0.35), and a step capped to
+  // land on an output time then never gets there.
+  double t_ = 0;
+  Real dt_ = 0;
   long steps_ = 0;
   Real nu_max_ = 0;
   PhaseTimes times_;

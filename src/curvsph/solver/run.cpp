@@ -250,7 +250,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       m["time_reached"] = solver.time();
       m["wall_seconds"] =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-      m["unstable"] = true;
+      m["unstable"] = 1;  // 0/1 as in metrics.json
       m["unstable_message"] = e.what();
       with_all([&](const Particles<D>& all) {
         for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());

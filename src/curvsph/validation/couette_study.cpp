@@ -48,7 +48,7 @@ struct Runner {
     } catch (const InstabilityError& e) {
       fmt::print(stderr, "couette study: run {} went unstable: {}\n", tag, e.what());
       nlohmann::json m;
-      m["unstable"] = true;
+      m["unstable"] = 1;
       for (const char* k : {"density_error_t0", "velocity_l2_error", "velocity_rms",
                             "density_error_end", "wall_seconds"})
         m[k] = std::numeric_limits<double>::quiet_NaN();

@@ -145,6 +145,16 @@ TEST_F(MpiRun, CouetteRebalancingEveryStepStillSame) {
   EXPECT_GE(m["rebalances"].get<long>(), 5) << "the re-balance path was not exercised";
 }
 
+// Surface tension: the curvature of an owned particle reads its neighbours' colour normals,
+// each a sum over their own neighbours, so a halo copy's normal must be complete (halo of two
+// supports); the ranks' cuts cross the drop's interface.
+TEST_F(MpiRun, StaticDropletSurfaceTensionSameOn1And2And4Ranks) {
+  same_on_1_2_4<2>(kCases +
+                       "static_droplet_2d.yaml --set resolution.dx=0.02 --set time.max_steps=20 "
+                       "--set output.every=100",
+                   1e-12);
+}
+
 TEST_F(MpiRun, BadInputStopsEveryRankWithOneMessage) {
   const int rc = run_ranks(2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
                                   " --set walls.0.radius=-0.01");

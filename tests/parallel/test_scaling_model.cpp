@@ -39,19 +39,44 @@ TEST(ScalingModel, CubeOfAMillionParticlesAtSupport2p6dx) {
   EXPECT_NEAR(cube_halo_fraction(1e6, 1.0, 2.6), 0.16244, 1e-5);
 }
 
+// Brute force: every lattice site outside a box of m^3 sites, within w of the box.
+TEST(ScalingModel, LatticeHaloMatchesSiteCount) {
+  for (const auto& [m, w] : {std::pair{10, 2.6}, std::pair{7, 3.1}, std::pair{12, 1.5}}) {
+    const int top = static_cast<int>(std::ceil(w));
+    long count = 0;
+    for (int i = -top; i < m + top; ++i)
+      for (int j = -top; j < m + top; ++j)
+        for (int k = -top; k < m + top; ++k) {
+          auto gap = [&](int v) { return v < 0 ? -v : (v >= m ? v - (m - 1) : 0); };
+          const int gi = gap(i), gj = gap(j), gk = gap(k);
+          const int r2 = gi * gi + gj * gj + gk * gk;
+          if (r2 > 0 && r2 < w * w) ++count;
+        }
+    const double md = m;
+    EXPECT_NEAR(lattice_halo_fraction({md, md, md}, {true, true, true}, w),
+                static_cast<double>(count) / (md * md * md), 1e-14)
+        << "m = " << m << ", w = " << w;
+  }
+  // A slab cut on x only: 2 layers on each of its two faces at w = 2.6.
+  EXPECT_NEAR(lattice_halo_fraction({63, 126, 126}, {true, false, false}, 2.6), 4.0 / 63, 1e-14);
+}
+
 TEST(ScalingModel, StepTimeAddsHaloComputeAndMessages) {
   StepModel m;
   m.rate = 1e5;
+  m.halo_cost = 0.25;
   m.exchanges = 3;
+  m.sized_exchanges = 2;
+  m.reductions = 4;
   m.bytes_per_halo = 100;
   m.latency = 1e-6;
   m.bandwidth = 1e9;
   const StepTime t = step_time(m, 1e5, 0.1, 26, 64);
   EXPECT_DOUBLE_EQ(t.compute, 1.0);
-  EXPECT_DOUBLE_EQ(t.halo_compute, 0.1);
-  // 3 x 26 messages + 3 x 63 size exchanges + 4 x log2(64) reductions, 1 us each, + 1e4 x 100 B / 1
-  // GB/s.
-  EXPECT_NEAR(t.communication, (78 + 189 + 24) * 1e-6 + 1e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(t.halo_compute, 0.025);  // 1e4 halo copies at a quarter of the cost
+  // 3 x 26 messages + 2 x 63 size exchanges + 4 x log2(64) reductions, 1 us each, + 1e4 x
+  // 100 B / 1 GB/s.
+  EXPECT_NEAR(t.communication, (78 + 126 + 24) * 1e-6 + 1e-3, 1e-15);
   EXPECT_DOUBLE_EQ(step_time(m, 1e5, 0.1, 26, 1).communication, 0.0);
 }
 

@@ -72,6 +72,40 @@ double cube_halo_fraction(double n, double dx, double w) {
   return 6 * x + 3 * pi * x * x + 4 * pi / 3 * x * x * x;
 }
 
+namespace {
+// Positive integer k-tuples (k = 1, 2, 3) with squared length below w^2.
+double positive_points_within(int k, double w) {
+  const int top = static_cast<int>(std::ceil(w));
+  long c = 0;
+  for (int a = 1; a <= top; ++a)
+    for (int b = 1; b <= (k > 1 ? top : 1); ++b)
+      for (int e = 1; e <= (k > 2 ? top : 1); ++e) {
+        const double r2 = a * a + (k > 1 ? b * b : 0) + (k > 2 ? e * e : 0);
+        if (r2 < w * w) ++c;
+      }
+  return static_cast<double>(c);
+}
+}  // namespace
+
+double lattice_halo_fraction(const std::array<double, 3>& m, const std::array<bool, 3>& cut,
+                             double w) {
+  double halo = 0;
+  for (int S = 1; S < 8; ++S) {
+    double term = 1;
+    int k = 0;
+    for (int d = 0; d < 3; ++d) {
+      const bool in = (S >> d) & 1;
+      if (in && !cut[static_cast<std::size_t>(d)]) term = 0;
+      if (in)
+        ++k, term *= 2;
+      else
+        term *= m[static_cast<std::size_t>(d)];
+    }
+    if (term > 0) halo += term * positive_points_within(k, w);
+  }
+  return halo / (m[0] * m[1] * m[2]);
+}
+
 int neighbour_count(const std::vector<RankBox>& boxes, int r, double w, double L) {
   const RankBox& a = boxes[static_cast<std::size_t>(r)];
   int count = 0;
@@ -94,10 +128,10 @@ int neighbour_count(const std::vector<RankBox>& boxes, int r, double w, double L
 StepTime step_time(const StepModel& m, double n, double f, int neighbours, int ranks) {
   StepTime t;
   t.compute = n / m.rate;
-  t.halo_compute = n * f / m.rate;
+  t.halo_compute = n * f * m.halo_cost / m.rate;
   if (ranks > 1) {
     const double msgs = m.exchanges * neighbours;
-    const double sizes = m.alltoall_sizes ? m.exchanges * (ranks - 1) : 0;
+    const double sizes = m.alltoall_sizes ? m.sized_exchanges * (ranks - 1) : 0;
     const double reduce = m.reductions * std::ceil(std::log2(static_cast<double>(ranks)));
     t.communication = (msgs + sizes + reduce) * m.latency + n * f * m.bytes_per_halo / m.bandwidth;
   }

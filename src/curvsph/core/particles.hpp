@@ -2,6 +2,7 @@
 // Particles in structure-of-arrays. Every per-particle field lives here, so a single
 // permute() reorders all of them at once (no module sorts its own data) and the output
 // writers can visit every field by name.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -92,5 +93,14 @@ struct Particles {
     data.swap(tmp);
   }
 };
+
+// The particles a neighbour pass computes: [0, owned) — an MPI rank's owned particles; the
+// halo copies behind them are neighbours only, their fields come from their owners — or every
+// particle when owned < 0 (one rank, tests).
+template <int D>
+Index computed_count(const Particles<D>& P, Index owned) {
+  const auto n = static_cast<Index>(P.size());
+  return owned < 0 ? n : std::min(owned, n);
+}
 
 }  // namespace curvsph

@@ -107,6 +107,12 @@ void Comm::sum(std::vector<double>& v) const {
   ++stats_.collectives;
   MPI_Allreduce(MPI_IN_PLACE, v.data(), checked_int(v.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
+void Comm::min(std::vector<double>& v) const {
+  if (size_ == 1 || v.empty()) return;
+  Timed t{stats_};
+  ++stats_.collectives;
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), checked_int(v.size()), MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+}
 void Comm::barrier() const {
   if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
 }
@@ -122,40 +128,49 @@ std::string Comm::broadcast(const std::string& s, int root) const {
   return out;
 }
 
-std::vector<std::vector<std::byte>> Comm::exchange(
-    const std::vector<std::vector<std::byte>>& send) const {
-  if (size_ == 1) return send;
-  Timed t{stats_};
+void Comm::exchange(const std::vector<std::vector<std::byte>>& send,
+                    std::vector<std::vector<std::byte>>& recv, bool sizes_known) const {
   const auto P = static_cast<std::size_t>(size_);
-  std::vector<int> scount(P), rcount(P), sdispl(P), rdispl(P);
-  std::size_t total = 0;
-  for (std::size_t r = 0; r < P; ++r) {
-    scount[r] = checked_int(send[r].size());
-    sdispl[r] = checked_int(total);
-    total += send[r].size();
-    if (r != static_cast<std::size_t>(rank_) && !send[r].empty()) {
+  const auto me = static_cast<std::size_t>(rank_);
+  recv.resize(P);
+  if (size_ == 1) {
+    recv[0].assign(send[0].begin(), send[0].end());
+    return;
+  }
+  Timed t{stats_};
+  // Scratch kept between calls: the exchange allocates nothing once it has grown.
+  static thread_local std::vector<int> scount, rcount;
+  static thread_local std::vector<MPI_Request> req;
+  if (!sizes_known) {
+    // Sizes first (one integer per pair), then the payload.
+    scount.resize(P);
+    rcount.resize(P);
+    for (std::size_t r = 0; r < P; ++r) scount[r] = checked_int(send[r].size());
+    ++stats_.collectives;
+    MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (std::size_t r = 0; r < P; ++r) recv[r].resize(static_cast<std::size_t>(rcount[r]));
+  }
+  // Point-to-point with the ranks that have something to send or receive: a rank talks to
+  // its few geometric neighbours, not to all P - 1 others (MPI_Alltoallv would).
+  constexpr int kTag = 8;  // issue 8; every exchange is collective and in order
+  req.clear();
+  for (std::size_t r = 0; r < P; ++r)
+    if (r != me && !recv[r].empty()) {
+      req.emplace_back();
+      MPI_Irecv(recv[r].data(), checked_int(recv[r].size()), MPI_BYTE, static_cast<int>(r), kTag,
+                MPI_COMM_WORLD, &req.back());
+    }
+  for (std::size_t r = 0; r < P; ++r)
+    if (r != me && !send[r].empty()) {
       ++stats_.messages;
       stats_.bytes += static_cast<std::int64_t>(send[r].size());
+      req.emplace_back();
+      // MPI_Isend takes a non-const buffer in older MPI headers; it only reads it.
+      MPI_Isend(const_cast<std::byte*>(send[r].data()), checked_int(send[r].size()), MPI_BYTE,
+                static_cast<int>(r), kTag, MPI_COMM_WORLD, &req.back());
     }
-  }
-  std::vector<std::byte> sbuf(total);
-  for (std::size_t r = 0; r < P; ++r)
-    if (!send[r].empty()) std::copy(send[r].begin(), send[r].end(), sbuf.begin() + sdispl[r]);
-  // Sizes first (one integer per pair), then the payload.
-  ++stats_.collectives;
-  MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  std::size_t rtotal = 0;
-  for (std::size_t r = 0; r < P; ++r) {
-    rdispl[r] = checked_int(rtotal);
-    rtotal += static_cast<std::size_t>(rcount[r]);
-  }
-  std::vector<std::byte> rbuf(rtotal);
-  MPI_Alltoallv(sbuf.data(), scount.data(), sdispl.data(), MPI_BYTE, rbuf.data(), rcount.data(),
-                rdispl.data(), MPI_BYTE, MPI_COMM_WORLD);
-  std::vector<std::vector<std::byte>> out(P);
-  for (std::size_t r = 0; r < P; ++r)
-    out[r].assign(rbuf.begin() + rdispl[r], rbuf.begin() + rdispl[r] + rcount[r]);
-  return out;
+  recv[me].assign(send[me].begin(), send[me].end());
+  MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
 }
 
 std::vector<std::byte> Comm::gather(const std::vector<std::byte>& mine, int root) const {

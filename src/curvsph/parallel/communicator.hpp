@@ -51,12 +51,19 @@ class Comm {
   // Element-wise sums (one collective for several counters).
   void sum(std::vector<std::int64_t>& v) const;
   void sum(std::vector<double>& v) const;
+  // Element-wise minimum (one collective for several bounds).
+  void min(std::vector<double>& v) const;
   void barrier() const;
   // Root's string on every rank.
   std::string broadcast(const std::string& s, int root) const;
-  // Personalised all-to-all: send[r] goes to rank r; returns what each rank sent here.
-  std::vector<std::vector<std::byte>> exchange(
-      const std::vector<std::vector<std::byte>>& send) const;
+  // Personalised exchange: send[r] goes to rank r, recv[r] receives what rank r sent here.
+  // The buffers are the caller's and are reused from call to call (no allocation once they
+  // have grown). Only ranks with a non-empty message are contacted (point-to-point). With
+  // sizes_known the caller has already sized recv[r] to what rank r sends (a refresh of a
+  // halo whose layout was fixed by the previous exchange), so the MPI_Alltoall of the message
+  // sizes (P - 1 latencies) is skipped.
+  void exchange(const std::vector<std::vector<std::byte>>& send,
+                std::vector<std::vector<std::byte>>& recv, bool sizes_known = false) const;
   // Concatenation of every rank's bytes on rank `root` (rank order); empty elsewhere.
   std::vector<std::byte> gather(const std::vector<std::byte>& mine, int root) const;
 

@@ -25,7 +25,11 @@ void Decomposition<D>::configure(const DecompositionOptions& o) {
   send_.assign(P, {});
   recv_begin_.assign(P, 0);
   recv_count_.assign(P, 0);
+  out_.assign(P, {});
+  in_.assign(P, {});
+  leave_.assign(P, {});
   boxes_.assign(P, Box{Vec<D>::Constant(-kInf), Vec<D>::Constant(kInf)});
+  owned_bounds_ = boxes_;
   tree_.assign(1, Node{});
   tree_[0].rank = 0;
 }
@@ -41,8 +45,8 @@ int Decomposition<D>::owner(const Vec<D>& x) const {
 }
 
 template <int D>
-Real Decomposition<D>::distance_to_box(const Vec<D>& x, int rank) const {
-  const Box& b = boxes_[static_cast<std::size_t>(rank)];
+Real Decomposition<D>::distance_to_owned(const Vec<D>& x, int rank) const {
+  const Box& b = owned_bounds_[static_cast<std::size_t>(rank)];
   Real d2 = 0;
   for (int d = 0; d < D; ++d) {
     auto gap = [&](Real v) { return std::max({b.lo[d] - v, v - b.hi[d], Real(0)}); };
@@ -55,6 +59,27 @@ Real Decomposition<D>::distance_to_box(const Vec<D>& x, int rank) const {
     d2 += g * g;
   }
   return std::sqrt(d2);
+}
+
+// Every rank's bounding box of its owned particles, in one reduction (min of lo and of -hi;
+// a rank's own slot is the only finite one before it).
+template <int D>
+void Decomposition<D>::gather_owned_bounds(const Particles<D>& P) {
+  const auto R = static_cast<std::size_t>(comm_.size());
+  bounds_.assign(R * 2 * D, static_cast<double>(kInf));
+  double* mine = bounds_.data() + static_cast<std::size_t>(comm_.rank()) * 2 * D;
+  for (Index i = 0; i < owned_; ++i)
+    for (int d = 0; d < D; ++d) {
+      mine[d] = std::min(mine[d], static_cast<double>(P.x[i][d]));
+      mine[D + d] = std::min(mine[D + d], -static_cast<double>(P.x[i][d]));
+    }
+  comm_.min(bounds_);
+  for (std::size_t r = 0; r < R; ++r)
+    for (int d = 0; d < D; ++d) {
+      owned_bounds_[r].lo[d] = static_cast<Real>(bounds_[r * 2 * D + static_cast<std::size_t>(d)]);
+      owned_bounds_[r].hi[d] =
+          static_cast<Real>(-bounds_[r * 2 * D + static_cast<std::size_t>(D + d)]);
+    }
 }
 
 // Cuts the tree node's region across its longest axis so that the ranks [rank_lo, mid) get
@@ -153,23 +178,23 @@ void Decomposition<D>::bisect(const Particles<D>& P) {
 template <int D>
 void Decomposition<D>::send_leavers(Particles<D>& P) {
   const auto R = static_cast<std::size_t>(comm_.size());
-  std::vector<std::vector<Index>> leave(R);
-  std::vector<std::size_t> keep;
-  keep.reserve(P.size());
+  for (auto& l : leave_) l.clear();
+  keep_.clear();
   for (Index i = 0; i < owned_; ++i) {
     const int r = owner(P.x[i]);
     if (r == comm_.rank())
-      keep.push_back(static_cast<std::size_t>(i));
+      keep_.push_back(static_cast<std::size_t>(i));
     else
-      leave[static_cast<std::size_t>(r)].push_back(i);
+      leave_[static_cast<std::size_t>(r)].push_back(i);
   }
-  std::vector<std::vector<std::byte>> out(R);
+  for (std::size_t r = 0; r < R; ++r) {
+    out_[r].clear();
+    if (!leave_[r].empty()) mpi::pack(P, leave_[r], mpi::FieldSet::all, out_[r]);
+  }
+  comm_.exchange(out_, in_);
+  if (keep_.size() != P.size()) P.permute(keep_);  // permute() keeps only the listed indices
   for (std::size_t r = 0; r < R; ++r)
-    if (!leave[r].empty()) mpi::pack(P, leave[r], mpi::FieldSet::all, out[r]);
-  const auto in = comm_.exchange(out);
-  if (keep.size() != P.size()) P.permute(keep);  // permute() keeps only the listed indices
-  for (std::size_t r = 0; r < R; ++r)
-    if (!in[r].empty()) mpi::unpack_append(P, in[r], mpi::FieldSet::all);
+    if (!in_[r].empty()) mpi::unpack_append(P, in_[r], mpi::FieldSet::all);
   owned_ = static_cast<Index>(P.size());
 }
 
@@ -253,23 +278,25 @@ void Decomposition<D>::exchange_halo(Particles<D>& P) {
   owned_ = static_cast<Index>(P.size());
   if (!active()) return;
   const auto R = static_cast<std::size_t>(comm_.size());
-  std::vector<std::vector<std::byte>> out(R);
+  gather_owned_bounds(P);
   {
     Clock c{stats_.seconds};
     for (auto& s : send_) s.clear();
     for (Index i = 0; i < owned_; ++i)
       for (std::size_t r = 0; r < R; ++r)
         if (static_cast<int>(r) != comm_.rank() &&
-            distance_to_box(P.x[i], static_cast<int>(r)) < o_.halo_width)
+            distance_to_owned(P.x[i], static_cast<int>(r)) < o_.halo_width)
           send_[r].push_back(i);
-    for (std::size_t r = 0; r < R; ++r)
-      if (!send_[r].empty()) mpi::pack(P, send_[r], mpi::FieldSet::halo, out[r]);
+    for (std::size_t r = 0; r < R; ++r) {
+      out_[r].clear();
+      if (!send_[r].empty()) mpi::pack(P, send_[r], mpi::FieldSet::halo, out_[r]);
+    }
   }
-  const auto in = comm_.exchange(out);
+  comm_.exchange(out_, in_);
   Clock c{stats_.seconds};
   for (std::size_t r = 0; r < R; ++r) {
     recv_begin_[r] = static_cast<Index>(P.size());
-    recv_count_[r] = static_cast<Index>(mpi::unpack_append(P, in[r], mpi::FieldSet::halo));
+    recv_count_[r] = static_cast<Index>(mpi::unpack_append(P, in_[r], mpi::FieldSet::halo));
   }
   stats_.halo_sum += static_cast<double>(P.size() - static_cast<std::size_t>(owned_));
   stats_.owned_sum += static_cast<double>(owned_);

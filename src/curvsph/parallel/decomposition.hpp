@@ -9,12 +9,20 @@
 // domain box, positions being wrapped into it.
 //
 // Layout: a rank's Particles hold its owned particles at [0, owned()) and, between
-// exchange_halo() and drop_halo(), halo copies of other ranks' particles within halo_width of
-// its sub-domain at [owned(), size()). The solver's passes run over every index (owned and
-// halo) unchanged; only owned results are kept: a halo copy's density, pressure and sigma
-// are overwritten from its owner by refresh(), its acceleration is never used, and the halo
-// is dropped at the start of the next step. Halo copies keep their wrapped position; the
-// local cell list applies the periodic image itself, as it does for a rank's own particles.
+// exchange_halo() and drop_halo(), halo copies of other ranks' particles at [owned(), size()).
+// The solver's neighbour passes compute owned particles only; halo copies are neighbours
+// whose fields come from their owners: the state at exchange_halo(), density, sigma and
+// pressure by refresh() after the density pass, any other array a later pass reads of its
+// neighbours (the delta-SPH density gradient, ...) by update_halo(). The halo is dropped at
+// the start of the next step. Halo copies keep their wrapped position; the local cell list
+// applies the periodic image itself, as it does for a rank's own particles.
+//
+// Halo width: a rank receives the particles within halo_width of the bounding box of its
+// owned particles (not of its ORB box, which may reach half a particle spacing, or on a
+// non-periodic outer side infinitely, beyond them): every particle within halo_width of an
+// owned particle, and no layer more. halo_width is the kernel support 2h (no Verlet skin:
+// the neighbour lists are rebuilt every step), widened where a pass reads neighbours of
+// neighbours (BoundaryModel::halo_reach, surface tension).
 //
 // Every call is collective (all ranks call it in the same order). On one rank every call
 // returns at once and the arrays are untouched: the serial solver is the same program.
@@ -62,7 +70,7 @@ class Decomposition {
   // when the counts drift apart by more than rebalance_imbalance.
   void migrate(Particles<D>& P);
   // Appends halo copies (positions, velocities, masses, densities, pressures, sigma, phase,
-  // id) of other ranks' particles within halo_width of this sub-domain.
+  // id) of other ranks' particles within halo_width of this rank's owned particles' box.
   void exchange_halo(Particles<D>& P);
   // Density, sigma and pressure of the halo copies from their owners (after the density pass).
   void refresh(Particles<D>& P) { update_halo(P.rho, P.sigma, P.p); }
@@ -97,16 +105,25 @@ class Decomposition {
              int rank_lo, int rank_hi);
   void send_leavers(Particles<D>& P);
   void check_conservation(const Particles<D>& P);
-  Real distance_to_box(const Vec<D>& x, int rank) const;
+  // Distance from x to the bounding box of rank r's owned particles (periodic: nearest
+  // image); infinite for a rank that owns none.
+  Real distance_to_owned(const Vec<D>& x, int rank) const;
+  void gather_owned_bounds(const Particles<D>& P);
 
   mpi::Comm comm_ = mpi::Comm::world();
   DecompositionOptions o_;
   std::vector<Node> tree_;
-  std::vector<Box> boxes_;  // per rank
+  std::vector<Box> boxes_;         // per rank: the ORB ownership boxes
+  std::vector<Box> owned_bounds_;  // per rank: bounding box of its owned particles (halo)
   Index owned_ = 0;
   // Halo bookkeeping: owned indices sent to each rank, and where each rank's copies start.
   std::vector<std::vector<Index>> send_;
   std::vector<Index> recv_begin_, recv_count_;
+  // Message buffers, per rank, reused by every exchange (no per-step allocation).
+  std::vector<std::vector<std::byte>> out_, in_;
+  std::vector<std::vector<Index>> leave_;
+  std::vector<std::size_t> keep_;
+  std::vector<double> bounds_;
   std::int64_t count0_ = 0, id0_ = 0, id2_0_ = 0;
   double mass0_ = 0;
   DecompositionStats stats_;
@@ -117,13 +134,11 @@ template <class... T>
 void Decomposition<D>::update_halo(std::vector<T>&... f) {
   if (!active()) return;
   const auto P = static_cast<std::size_t>(comm_.size());
-  std::vector<std::vector<std::byte>> out(P);
+  constexpr std::size_t record = (sizeof(T) + ... + 0);
   for (std::size_t r = 0; r < P; ++r) {
     const auto& idx = send_[r];
-    std::size_t bytes = 0;
-    ((bytes += idx.size() * sizeof(T)), ...);
-    out[r].resize(bytes);
-    std::byte* at = out[r].data();
+    out_[r].resize(idx.size() * record);
+    std::byte* at = out_[r].data();
     auto put = [&](const auto& data) {
       using V = typename std::decay_t<decltype(data)>::value_type;
       for (const Index i : idx) {
@@ -132,11 +147,13 @@ void Decomposition<D>::update_halo(std::vector<T>&... f) {
       }
     };
     (put(f), ...);
+    // The layout of the halo is fixed since exchange_halo(): what each rank sends is known.
+    in_[r].resize(static_cast<std::size_t>(recv_count_[r]) * record);
   }
-  const auto in = comm_.exchange(out);
+  comm_.exchange(out_, in_, /*sizes_known=*/true);
   for (std::size_t r = 0; r < P; ++r) {
     const auto k = static_cast<std::size_t>(recv_count_[r]);
-    const std::byte* at = in[r].data();
+    const std::byte* at = in_[r].data();
     auto get = [&](auto& data) {
       using V = typename std::decay_t<decltype(data)>::value_type;
       std::memcpy(static_cast<void*>(data.data() + recv_begin_[r]), at, k * sizeof(V));

@@ -17,9 +17,11 @@
 
 namespace curvsph {
 
+// `owned`: the particles computed (computed_count; -1: all).
 template <int D>
-void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W) {
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                       Index owned = -1) {
+  parallel_for(computed_count(P, owned), [&](Index i) {
     Real s = 0;
     cells.for_each_neighbor(P.x[i], P.x,
                             [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
@@ -29,15 +31,16 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
 }
 
 // The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho.
-// `pf` is the caller's reusable scratch (its volumes are filled here).
+// `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
+// computed (computed_count; -1: all).
 template <int D>
 void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
                                    const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho,
-                                   PairFactors<D>& pf) {
+                                   PairFactors<D>& pf, Index owned = -1) {
   grad_rho.resize(P.size());
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+  parallel_for(computed_count(P, owned), [&](Index i) {
     Mat<D> M = Mat<D>::Zero();
     Vec<D> g = Vec<D>::Zero();
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
@@ -62,13 +65,15 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
 
 // Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
 // is the renormalised gradient, or nullptr when delta = 0. `pf` is the caller's reusable
-// scratch (its volumes are filled here).
+// scratch (its volumes are filled here); `owned`: the particles computed (computed_count;
+// -1: all).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf) {
+                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
+                     Index owned = -1) {
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+  parallel_for(computed_count(P, owned), [&](Index i) {
     Real div = 0, diff = 0;
     cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;

@@ -27,15 +27,16 @@ void update_pressure(Particles<D>& P, const FluidParams<D>& F) {
 
 // Pair accelerations (pressure gradient and viscosity) of every particle; body forces are
 // added by body_forces() after the wall terms.
-// `pf` is the caller's reusable scratch (filled here).
+// `pf` is the caller's reusable scratch (filled here); `owned`: the particles computed
+// (computed_count; -1: all).
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                  const FluidParams<D>& F, PairFactors<D>& pf) {
+                  const FluidParams<D>& F, PairFactors<D>& pf, Index owned = -1) {
   pf.fill_forces(P, F);
   const Real* inv_s2 = pf.inv_s2.data();
   const Real* p_s2 = pf.p_s2.data();
   const Real* mu = pf.mu.data();
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+  parallel_for(computed_count(P, owned), [&](Index i) {
     const Real inv_si2 = inv_s2[i];
     const Real pi_s2 = p_s2[i];
     const Real mu_i = mu[i];

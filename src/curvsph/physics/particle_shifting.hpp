@@ -19,8 +19,9 @@ namespace curvsph {
 template <int D>
 void shift_particles(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W, Real dx,
                      Real coefficient, std::vector<Vec<D>>& shift, std::vector<Real>& drho,
-                     std::vector<Vec<D>>& dv) {
-  const Index n = static_cast<Index>(P.size());
+                     std::vector<Vec<D>>& dv, Index owned = -1) {
+  // `owned`: the particles shifted (computed_count; -1: all).
+  const Index n = computed_count(P, owned);
   shift.resize(P.size());
   drho.resize(P.size());
   dv.resize(P.size());

@@ -73,9 +73,12 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (boundary_) boundary_->check_setup(P_, c.file_name());
 
   // [mpi] The halo reaches as far as any pass reads neighbours (kernel support, more where
-  // the boundary model reads further).
+  // the boundary model reads further). Surface tension's curvature reads its neighbours'
+  // colour normals, each a sum over their own neighbours (and images): twice the reach, so
+  // that a halo copy's normal is complete where an owned particle reads it.
   DecompositionOptions dop;
-  dop.halo_width = W_.support * (boundary_ ? boundary_->halo_reach() : Real(1));
+  dop.halo_width = W_.support * (boundary_ ? boundary_->halo_reach() : Real(1)) *
+                   (c.surface_tension.empty() ? Real(1) : Real(2));
   dop.rebalance_imbalance = c.rebalance_imbalance;
   dop.check_conservation = c.check_conservation;
   dop.domain_min = c.domain_min;
@@ -123,6 +126,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
     }
     mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
   }
+  // [mpi] The neighbour passes compute owned particles only (`own`); halo copies are
+  // neighbours whose fields come from their owners (exchange_halo, refresh, update_halo).
+  const Index own = decomp_.owned();
   {
     Stopwatch sw{times_.density};
     if (continuity_) {
@@ -132,17 +138,16 @@ void Solver<D>::compute_rates(Real dt_rho) {
       if (dt_rho > 0) {
         const bool delta = F_.delta_sph > 0;
         if (delta) {
-          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_);
+          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, own);
           decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
         }
         continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
-                        delta ? &grad_rho_ : nullptr, pair_);
+                        delta ? &grad_rho_ : nullptr, pair_, own);
         if (boundary_) boundary_->add_density_rate(P_);
-        parallel_for(static_cast<Index>(P_.size()),
-                     [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
+        parallel_for(own, [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
       }
     } else {
-      density_summation(P_, cells_, W_);
+      density_summation(P_, cells_, W_, own);
       if (boundary_) boundary_->add_density(P_);
     }
     update_pressure(P_, F_);
@@ -150,7 +155,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   {
     Stopwatch sw{times_.forces};
-    fluid_forces(P_, cells_, W_, F_, pair_);
+    fluid_forces(P_, cells_, W_, F_, pair_, own);
     if (!case_.surface_tension.empty()) {
       const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
                                             boundary_ ? boundary_->images() : WallImages<D>{},
@@ -226,13 +231,13 @@ void Solver<D>::step(Real dt_cap) {
   compute_rates(dt_);
   {
     Stopwatch sw{times_.integrate};
-    parallel_for(static_cast<Index>(P_.size()), [&](Index i) { P_.v[i] += half * P_.a[i]; });
+    parallel_for(decomp_.owned(), [&](Index i) { P_.v[i] += half * P_.a[i]; });
   }
   if (case_.shifting > 0) {
     decomp_.update_halo(P_.v);  // [mpi] the kick above is right for owned particles only
     Stopwatch sw{times_.integrate};
     shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
-                    shift_, shift_drho_, shift_dv_);
+                    shift_, shift_drho_, shift_dv_, decomp_.owned());
   }
   t_ += dt_;
   ++steps_;

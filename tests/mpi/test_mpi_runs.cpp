@@ -155,6 +155,15 @@ TEST_F(MpiRun, StaticDropletSurfaceTensionSameOn1And2And4Ranks) {
                    1e-12);
 }
 
+// Boundary integrals (wall pressure interpolated from the fluid near each element: a halo of
+// two supports), continuity with delta-SPH (the density gradient of halo copies refreshed).
+TEST_F(MpiRun, HydrostaticTankBoundaryIntegralsSameOn1And2And4Ranks) {
+  same_on_1_2_4<2>(kCases +
+                       "hydrostatic_tank.yaml --set resolution.dx=0.02 --set time.max_steps=10 "
+                       "--set output.every=100",
+                   1e-12);
+}
+
 TEST_F(MpiRun, BadInputStopsEveryRankWithOneMessage) {
   const int rc = run_ranks(2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
                                   " --set walls.0.radius=-0.01");

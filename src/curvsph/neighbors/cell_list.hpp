@@ -1,8 +1,9 @@
 #pragma once
-// Cell list with cell size >= the kernel support 2h and periodic wrap on any axis.
-// Particle indices are bucketed by a counting sort; pair iteration visits the 3^D cells
-// around a point and hands the caller the separation vector with the periodic image
-// already applied, so physics terms never see the domain topology.
+// Cell list with cells of half the kernel support (h; the support where a periodic axis is too
+// short for that) and periodic wrap on any axis.
+// Particle indices are bucketed by a counting sort; pair iteration visits the cells
+// (5^D at half-support cells) around a point and hands the caller the separation vector with the
+// periodic image already applied, so physics terms never see the domain topology.
 //
 // build() also keeps a copy of the positions in cell order, one array per axis (sx_). The
 // candidate test of a row then reads contiguous memory and runs without a data-dependent
@@ -181,7 +182,7 @@ class CellList {
   }
 
  private:
-  static constexpr int kMaxReach = 1;
+  static constexpr int kMaxReach = 2;
   static constexpr int kBlock = 64;
 
   // Calls scan(begin, end, shift) for every contiguous range of sorted_ that holds the cells

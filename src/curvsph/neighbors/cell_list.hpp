@@ -1,11 +1,20 @@
 #pragma once
-// Cell list with cell size >= the kernel support 2h and periodic wrap on any axis.
-// Particle indices are bucketed by a counting sort; pair iteration visits the 3^D cells
-// around a point and hands the caller the separation vector with the periodic image
-// already applied, so physics terms never see the domain topology.
+// Cell list with cells of half the kernel support (h; the support where a periodic axis is too
+// short for that) and periodic wrap on any axis.
+// Particle indices are bucketed by a counting sort; pair iteration visits the cells
+// (5^D at half-support cells) around a point and hands the caller the separation vector with the
+// periodic image already applied, so physics terms never see the domain topology.
+//
+// build() also keeps a copy of the positions in cell order, one array per axis (sx_). The
+// candidate test of a row then reads contiguous memory and runs without a data-dependent
+// branch: the squared distances of a block of candidates are computed in one loop (SIMD
+// across candidates), the hits are compacted into a small index buffer by a branch-free
+// store, and only the hits reach the caller. With ~85 % of the candidates outside the
+// support (docs/performance.md), the per-candidate branch of a plain scan mispredicts often.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "curvsph/core/types.hpp"
@@ -56,10 +65,19 @@ class CellList {
 
   void build(const std::vector<Vec<D>>& x) {
     const Index n = static_cast<Index>(x.size());
+    // Cells of size support / reach_ with a stencil of reach_ cells each way: reach 2 tests
+    // 5^D (support/2)^D = 125/216 of the candidate volume of reach 1 in 3-D (the support
+    // sphere is 33.5 h^3 of 216 h^3 at reach 1). A periodic axis needs 2 reach + 1 cells so
+    // that no cell is visited twice; where one has fewer, reach 1 is used.
+    reach_ = kMaxReach;
+    for (int d = 0; d < D; ++d)
+      if (periodic_[d] && std::floor(length_[d] / (support_ / kMaxReach)) < 2 * kMaxReach + 1)
+        reach_ = 1;
+    const Real cell = support_ / reach_;
     // Bounds of non-periodic axes from the particles.
     for (int d = 0; d < D; ++d) {
       if (periodic_[d]) {
-        count_[d] = std::max(1, static_cast<int>(std::floor(length_[d] / support_)));
+        count_[d] = std::max(1, static_cast<int>(std::floor(length_[d] / cell)));
         cell_[d] = length_[d] / count_[d];
         origin_[d] = lo_[d];
         continue;
@@ -70,8 +88,8 @@ class CellList {
         mx = std::max(mx, x[i][d]);
       }
       origin_[d] = mn - Real(1e-9) * std::max(Real(1), std::abs(mn));
-      count_[d] = std::max(1, static_cast<int>(std::floor((mx - origin_[d]) / support_)) + 1);
-      cell_[d] = support_;
+      count_[d] = std::max(1, static_cast<int>(std::floor((mx - origin_[d]) / cell)) + 1);
+      cell_[d] = cell;
     }
     Index cells = 1;
     for (int d = 0; d < D; ++d) cells *= count_[d];
@@ -85,6 +103,10 @@ class CellList {
     sorted_.resize(n);
     fill_.assign(start_.begin(), start_.end() - 1);
     for (Index i = 0; i < n; ++i) sorted_[fill_[cell_of_[i]]++] = i;
+    for (int d = 0; d < D; ++d) {
+      sx_[d].resize(n);
+      for (Index s = 0; s < n; ++s) sx_[d][s] = x[sorted_[s]][d];
+    }
   }
 
   // Calls f(j, r_ij = x - x_j (periodic image applied), r2) for every indexed point j with
@@ -92,16 +114,84 @@ class CellList {
   // visited with r = 0). pos must be the array the list was built from (or that array moved
   // by less than the cell slack, as after particle shifting).
   //
-  // The 3^D neighbour cells are visited as 3^(D-1) rows along axis 0: the three cells of a
-  // row are adjacent in the linear cell index, hence one contiguous range of sorted_ (split
-  // only where a periodic axis 0 wraps). That replaces 27 (3-D) per-cell set-ups and their
-  // branches by 9 range scans. Cells are visited in the same order as a cell-by-cell sweep
-  // (axis 0 fastest), so the sums come out bit for bit the same.
+  // The neighbour cells are visited as rows along axis 0: the cells of a row are adjacent in
+  // the linear cell index, hence one contiguous range of sorted_ (split only where a periodic
+  // axis 0 wraps). Cells are visited axis 0 fastest, as a cell-by-cell sweep would.
   template <class F>
   void for_each_neighbor(const Vec<D>& x, const std::vector<Vec<D>>& pos, F&& f) const {
+    for_each_row(x, [&](Index begin, Index end, const Vec<D>& shift) {
+      for (Index s = begin; s < end; ++s) {
+        const Index j = sorted_[s];
+        const Vec<D> r = x - (pos[j] + shift);
+        const Real r2 = r.squaredNorm();
+        if (r2 < support2_) f(j, r, r2);
+      }
+    });
+  }
+
+  // As above, with the positions the list was built from (its own copy in cell order): for
+  // passes that run between build() and the next move of the particles. Same pairs, same
+  // order, same r and r2 bit for bit as for_each_neighbor(x, x_at_build, f).
+  template <class F>
+  void for_each_neighbor(const Vec<D>& x, F&& f) const {
+    for_each_row(x, [&](Index begin, Index end, const Vec<D>& shift) {
+      for (Index b = begin; b < end; b += kBlock) {
+        const int m = static_cast<int>(std::min<Index>(kBlock, end - b));
+        // Squared distances of the block, one lane per candidate (no branch, vectorisable).
+        // The test is a filter with a relative margin; the exact test below decides.
+        alignas(64) Real r2b[kBlock];
+        for (int k = 0; k < m; ++k) {
+          Real q = 0;
+          for (int d = 0; d < D; ++d) {
+            const Real rd = x[d] - (sx_[d][b + k] + shift[d]);
+            q += rd * rd;
+          }
+          r2b[k] = q;
+        }
+        int hits[kBlock];
+        int nh = 0;
+        const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
+        for (int k = 0; k < m; ++k) {
+          hits[nh] = k;
+          nh += r2b[k] < filter2;
+        }
+        for (int h = 0; h < nh; ++h) {
+          const Index s = b + hits[h];
+          Vec<D> p;
+          for (int d = 0; d < D; ++d) p[d] = sx_[d][s];
+          // The exact expression of the pos-array overload, so decisions and values agree.
+          const Vec<D> r = x - (p + shift);
+          const Real r2 = r.squaredNorm();
+          if (r2 < support2_) f(sorted_[s], r, r2);
+        }
+      }
+    });
+  }
+
+  // Particle indices in cell order: the permutation that makes cells contiguous in memory.
+  const std::vector<Index>& sorted() const { return sorted_; }
+  Index cell_count() const { return static_cast<Index>(start_.size()) - 1; }
+  // Bytes held by the index arrays and the sorted positions (memory-per-particle accounting
+  // of the throughput study).
+  std::size_t bytes() const {
+    std::size_t b =
+        (cell_of_.capacity() + start_.capacity() + fill_.capacity() + sorted_.capacity()) *
+        sizeof(Index);
+    for (int d = 0; d < D; ++d) b += sx_[d].capacity() * sizeof(Real);
+    return b;
+  }
+
+ private:
+  static constexpr int kMaxReach = 2;
+  static constexpr int kBlock = 64;
+
+  // Calls scan(begin, end, shift) for every contiguous range of sorted_ that holds the cells
+  // within reach_ of x's cell, shift being the periodic image offset of that range.
+  template <class S>
+  void for_each_row(const Vec<D>& x, S&& scan) const {
     const std::array<int, D> c = coords(x);
     std::array<int, D> off{};
-    for (int d = 1; d < D; ++d) off[d] = -1;
+    for (int d = 1; d < D; ++d) off[d] = -reach_;
     while (true) {
       Vec<D> shift = Vec<D>::Zero();
       Index row = 0;
@@ -125,59 +215,39 @@ class CellList {
         }
         row = row * count_[d] + k;
       }
-      if (inside) visit_row(x, pos, c[0], row * count_[0], shift, f);
+      if (inside) visit_row(c[0], row * count_[0], shift, scan);
       int d = 1;
-      while (d < D && ++off[d] > 1) off[d++] = -1;
+      while (d < D && ++off[d] > reach_) off[d++] = -reach_;
       if (d == D) break;
     }
   }
 
-  // Particle indices in cell order: the permutation that makes cells contiguous in memory.
-  const std::vector<Index>& sorted() const { return sorted_; }
-  Index cell_count() const { return static_cast<Index>(start_.size()) - 1; }
-  // Bytes held by the index arrays (memory-per-particle accounting of the throughput study).
-  std::size_t bytes() const {
-    return (cell_of_.capacity() + start_.capacity() + fill_.capacity() + sorted_.capacity()) *
-           sizeof(Index);
-  }
-
- private:
-  // The cells c0-1..c0+1 of the row starting at linear index base, in that order.
-  template <class F>
-  void visit_row(const Vec<D>& x, const std::vector<Vec<D>>& pos, int c0, Index base, Vec<D> shift,
-                 F& f) const {
+  // The cells c0-reach..c0+reach of the row starting at linear index base, in that order.
+  template <class S>
+  void visit_row(int c0, Index base, Vec<D> shift, S& scan) const {
     const int n0 = count_[0];
+    const int r = reach_;
     if (!periodic_[0]) {
-      const int lo = std::max(c0 - 1, 0), hi = std::min(c0 + 1, n0 - 1);
-      scan(x, pos, start_[base + lo], start_[base + hi + 1], shift, f);
+      const int lo = std::max(c0 - r, 0), hi = std::min(c0 + r, n0 - 1);
+      scan(start_[base + lo], start_[base + hi + 1], shift);
       return;
     }
     if (n0 < 3) {  // the centre cell already holds every image along axis 0
-      scan(x, pos, start_[base + c0], start_[base + c0 + 1], shift, f);
+      scan(start_[base + c0], start_[base + c0 + 1], shift);
       return;
     }
-    if (c0 == 0) {  // the left neighbour is the last cell, one period to the left
+    // n0 >= 2 r + 1 here (build() picks r so), so at most one end wraps.
+    if (c0 - r < 0) {  // the left cells are the last ones, one period to the left
       shift[0] = -length_[0];
-      scan(x, pos, start_[base + n0 - 1], start_[base + n0], shift, f);
+      scan(start_[base + n0 + c0 - r], start_[base + n0], shift);
       shift[0] = 0;
-      scan(x, pos, start_[base], start_[base + 2], shift, f);
-    } else if (c0 == n0 - 1) {  // the right neighbour is the first cell, one period right
-      scan(x, pos, start_[base + n0 - 2], start_[base + n0], shift, f);
+      scan(start_[base], start_[base + c0 + r + 1], shift);
+    } else if (c0 + r >= n0) {  // the right cells are the first ones, one period right
+      scan(start_[base + c0 - r], start_[base + n0], shift);
       shift[0] = length_[0];
-      scan(x, pos, start_[base], start_[base + 1], shift, f);
+      scan(start_[base], start_[base + c0 + r + 1 - n0], shift);
     } else {
-      scan(x, pos, start_[base + c0 - 1], start_[base + c0 + 2], shift, f);
-    }
-  }
-
-  template <class F>
-  void scan(const Vec<D>& x, const std::vector<Vec<D>>& pos, Index begin, Index end,
-            const Vec<D>& shift, F& f) const {
-    for (Index s = begin; s < end; ++s) {
-      const Index j = sorted_[s];
-      const Vec<D> r = x - (pos[j] + shift);
-      const Real r2 = r.squaredNorm();
-      if (r2 < support2_) f(j, r, r2);
+      scan(start_[base + c0 - r], start_[base + c0 + r + 1], shift);
     }
   }
 
@@ -196,10 +266,12 @@ class CellList {
   }
 
   Real support_ = 0, support2_ = 0;
+  int reach_ = 1;  // cells per support along each axis (build())
   std::array<bool, D> periodic_{};
   std::array<Real, D> lo_{}, length_{}, origin_{}, cell_{};
   std::array<int, D> count_{};
   std::vector<Index> cell_of_, start_, fill_, sorted_;
+  std::array<std::vector<Real>, D> sx_;  // positions at build(), in cell order, per axis
 };
 
 }  // namespace curvsph

@@ -6,6 +6,9 @@
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
 // where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j -
 // x_i)]^-1, exact for linear fields).
+// Every pass here reads neighbours through the cell list's own sorted copy of the positions
+// (CellList::for_each_neighbor without a position array): `cells` must have been built from
+// P.x as it is now, which the solver guarantees (build_neighbors() right before the passes).
 #include <Eigen/LU>
 #include <vector>
 
@@ -23,7 +26,7 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
                        Index owned = -1) {
   parallel_for(computed_count(P, owned), [&](Index i) {
     Real s = 0;
-    cells.for_each_neighbor(P.x[i], P.x,
+    cells.for_each_neighbor(P.x[i],
                             [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
     P.sigma[i] = s;
     P.rho[i] = P.mass[i] * s;
@@ -43,7 +46,7 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
   parallel_for(computed_count(P, owned), [&](Index i) {
     Mat<D> M = Mat<D>::Zero();
     Vec<D> g = Vec<D>::Zero();
-    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Vec<D> gradW = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
       const Real Vj = V[j];
@@ -75,7 +78,7 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
   const Real* V = pf.volume.data();
   parallel_for(computed_count(P, owned), [&](Index i) {
     Real div = 0, diff = 0;
-    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
       const Real Vj = V[j];

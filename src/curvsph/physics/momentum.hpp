@@ -5,7 +5,8 @@
 // with mu_ij = 2 mu_i mu_j / (mu_i + mu_j) between fluids of different viscosity (Hu & Adams
 // 2006: keeps the pair force antisymmetric and the shear stress continuous at interfaces).
 // Gather form: each particle sums over its
-// own neighbours, so threads never write to the same particle.
+// own neighbours, so threads never write to the same particle. Neighbours come from the cell
+// list's sorted copy of the positions: `cells` must have been built from P.x as it is now.
 #include <vector>
 
 #include "curvsph/core/parallel.hpp"
@@ -43,7 +44,7 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
     const Vec<D> vi = P.v[i];
     Vec<D> grad_p = Vec<D>::Zero();
     Vec<D> visc = Vec<D>::Zero();
-    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
       if (j == i) return;
       const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
       grad_p += (p_s2[j] + pi_s2) * f * r;

@@ -89,6 +89,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   std::vector<Pair> pairs_;
   std::vector<Index> pair_start_;                // size n + 1
   std::vector<Index> pair_local_;                // first pair of i in its thread's buffer
+  std::vector<int> pair_thread_;                 // the thread whose buffer holds i's pairs
   std::vector<std::vector<Pair>> thread_pairs_;  // per-thread pairs before the gather
   // Elements with a particle within 2h (plus round-off): the only ones whose wall pressure
   // has fluid to extrapolate from; the others keep p_b = 0 without a fluid search.

@@ -10,11 +10,10 @@ namespace curvsph {
 namespace {
 
 template <int D>
-void check_against_brute_force(std::array<bool, 3> periodic, unsigned seed) {
+void check_against_brute_force(std::array<bool, 3> periodic, unsigned seed, Real support = 0.11) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
   const Vec3d lo(-0.3, 0.1, 0.2), hi(0.7, 0.8, 1.1);
-  const Real support = 0.11;
   std::vector<Vec<D>> x(3000);
   for (auto& p : x)
     for (int d = 0; d < D; ++d) p[d] = lo[d] + (hi[d] - lo[d]) * U(rng);
@@ -71,6 +70,15 @@ TEST(CellList, MatchesBruteForce3DPeriodic) {
 }
 TEST(CellList, MatchesBruteForce3DMixed) {
   check_against_brute_force<3>({false, true, false}, 5);
+}
+
+// Periodic axes only 2.33 supports long (0.7 / 0.3): two cells, each holding points whose
+// nearest image lies on either side; the whole row is scanned in three images.
+TEST(CellList, MatchesBruteForceOnShortPeriodicAxes2D) {
+  check_against_brute_force<2>({true, true, false}, 6, 0.3);
+}
+TEST(CellList, MatchesBruteForceOnShortPeriodicAxes3D) {
+  check_against_brute_force<3>({true, true, true}, 7, 0.3);
 }
 
 TEST(CellList, WrapKeepsPointsInTheBox) {

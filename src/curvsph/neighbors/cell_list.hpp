@@ -24,8 +24,9 @@ namespace curvsph {
 template <int D>
 class CellList {
  public:
-  // Periodic axes use [min, max) of the given domain and need at least 3 cells; the other
-  // axes take the particles' bounding box at every build.
+  // Periodic axes use [min, max) of the given domain and must span at least two supports
+  // (so that at most one image of a point lies within the support); the other axes take the
+  // particles' bounding box at every build.
   void configure(Real support, const Vec3d& domain_min, const Vec3d& domain_max,
                  std::array<bool, 3> periodic) {
     support_ = support;
@@ -184,40 +185,63 @@ class CellList {
  private:
   static constexpr int kMaxReach = 2;
   static constexpr int kBlock = 64;
+  // Cells visited along one axis: 2 kMaxReach + 1 in a stencil, or 3 images of at most 2
+  // cells where a periodic axis is shorter than 3 supports.
+  static constexpr int kMaxAxisVisits = 2 * kMaxReach + 2;
 
   // Calls scan(begin, end, shift) for every contiguous range of sorted_ that holds the cells
   // within reach_ of x's cell, shift being the periodic image offset of that range.
   template <class S>
   void for_each_row(const Vec<D>& x, S&& scan) const {
     const std::array<int, D> c = coords(x);
-    std::array<int, D> off{};
-    for (int d = 1; d < D; ++d) off[d] = -reach_;
+    // Per axis 1..D-1, the cells to visit and the periodic image offset of each.
+    std::array<std::array<int, kMaxAxisVisits>, D> cell{};
+    std::array<std::array<Real, kMaxAxisVisits>, D> offset{};
+    std::array<int, D> visits{};
+    for (int d = 1; d < D; ++d) {
+      int n = 0;
+      if (periodic_[d] && count_[d] < 2 * reach_ + 1) {
+        // Too few cells to visit each once in a stencil: every cell, in each of the three
+        // images that can reach x (the length is at least two supports, so at most one
+        // image of a point lies within the support).
+        for (int s = -1; s <= 1; ++s)
+          for (int k = 0; k < count_[d]; ++k) {
+            cell[d][n] = k;
+            offset[d][n++] = static_cast<Real>(s) * length_[d];
+          }
+      } else {
+        for (int off = -reach_; off <= reach_; ++off) {
+          int k = c[d] + off;
+          Real sh = 0;
+          if (periodic_[d]) {
+            if (k < 0) {
+              k += count_[d];
+              sh = -length_[d];
+            } else if (k >= count_[d]) {
+              k -= count_[d];
+              sh = length_[d];
+            }
+          } else if (k < 0 || k >= count_[d]) {
+            continue;
+          }
+          cell[d][n] = k;
+          offset[d][n++] = sh;
+        }
+      }
+      visits[d] = n;
+      if (n == 0) return;
+    }
+    std::array<int, D> at{};
     while (true) {
       Vec<D> shift = Vec<D>::Zero();
       Index row = 0;
-      bool inside = true;
-      for (int d = D - 1; d >= 1 && inside; --d) {
-        int k = c[d] + off[d];
-        if (periodic_[d]) {
-          if (count_[d] < 3 && off[d] != 0) {
-            inside = false;  // tiny periodic axes: the centre cell already holds everyone
-            break;
-          }
-          if (k < 0) {
-            k += count_[d];
-            shift[d] = -length_[d];
-          } else if (k >= count_[d]) {
-            k -= count_[d];
-            shift[d] = length_[d];
-          }
-        } else if (k < 0 || k >= count_[d]) {
-          inside = false;
-        }
-        row = row * count_[d] + k;
+      for (int d = D - 1; d >= 1; --d) {
+        row = row * count_[d] + cell[d][at[d]];
+        shift[d] = offset[d][at[d]];
       }
-      if (inside) visit_row(c[0], row * count_[0], shift, scan);
+      visit_row(c[0], row * count_[0], shift, scan);
       int d = 1;
-      while (d < D && ++off[d] > reach_) off[d++] = -reach_;
+      while (d < D && ++at[d] == visits[d]) at[d++] = 0;
       if (d == D) break;
     }
   }
@@ -232,8 +256,11 @@ class CellList {
       scan(start_[base + lo], start_[base + hi + 1], shift);
       return;
     }
-    if (n0 < 3) {  // the centre cell already holds every image along axis 0
-      scan(start_[base + c0], start_[base + c0 + 1], shift);
+    if (n0 < 2 * r + 1) {  // too few cells for a stencil: the whole row, in three images
+      for (int s = -1; s <= 1; ++s) {
+        shift[0] = static_cast<Real>(s) * length_[0];
+        scan(start_[base], start_[base + n0], shift);
+      }
       return;
     }
     // n0 >= 2 r + 1 here (build() picks r so), so at most one end wraps.

@@ -5,11 +5,13 @@ D2Q9 lattice-Boltzmann solver (BGK, Guo et al. 2002 forcing, Bouzidi et al. 2001
 interpolated bounce-back on the exact B-spline walls, periodic in x). Shares no code with
 curvsph: the walls are evaluated with scipy's BSpline from the case's control points.
 
-    /usr/bin/python3 scripts/throttled_pipe_reference.py NY G T_END [TAU]
+    /usr/bin/python3 scripts/throttled_pipe_reference.py NY G T_END [TAU [BUMP]]
 
 NY: lattice nodes across the wide section (L_y = 0.01 m); G: body force per unit mass
 (m/s^2); T_END: simulated seconds (the slowest viscous mode decays as exp(-t/1 s));
-TAU: BGK relaxation time (1.0 default). Prints Q and Re = rho Q / mu every tenth of the run.
+TAU: BGK relaxation time (1.0 default). BUMP: scales the walls' departure from y = -+L_y/2
+(1 default: the case's walls; 0: a plane channel, Q = g L_y^3 / (12 nu); 0.5: the "mild" variant
+of docs/validation/throttled_pipe/findings.md). Prints Q and Re = rho Q / mu every tenth of the run.
 """
 import sys
 
@@ -20,11 +22,13 @@ ny = int(sys.argv[1])
 g = float(sys.argv[2])
 t_end = float(sys.argv[3])
 tau = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
+bump = float(sys.argv[5]) if len(sys.argv) > 5 else 1.0
 Lx, Ly, mu, rho0 = 0.024, 0.01, 0.01, 1000.0
 nu = mu / rho0
 # Bottom wall of cases/throttled_pipe.yaml (cubic, clamped uniform knots); the top wall is
 # its mirror image y -> -y.
 cy = [-0.005] * 5 + [-0.0046, -0.0037, -0.00275, -0.002375, -0.00275, -0.0037, -0.0046] + [-0.005] * 5
+cy = [-0.005 + bump * (v + 0.005) for v in cy]
 cx = np.linspace(-0.016, 0.016, 17)
 knots = np.array([0, 0, 0, 0] + list(range(1, 14)) + [14, 14, 14, 14], float)
 tt = np.linspace(0, 14, 400001)

@@ -74,7 +74,11 @@ class NodeDensityAnalysis final : public Analysis<D> {
       binned.open(out_dir / "node_density_binned.csv");
       binned << "map,kind,distance,mean,std,min,max,count\n";
       points.open(out_dir / "node_density_points.csv");
-      points << "map,kind,distance,n_rel\n";
+      // Positions too, so that a study can bin by where on the wall a point sits (e.g. the
+      // poloidal angle on a torus), not only by depth.
+      points << "map,kind,distance,n_rel";
+      for (int k = 0; k < D; ++k) points << ",x" << k;
+      points << "\n";
     }
     const double bin = 0.25 * c.dx;
     for (GhostMapKind map : maps_) {
@@ -122,9 +126,13 @@ class NodeDensityAnalysis final : public Analysis<D> {
             a.mn = std::min(a.mn, v);
             a.mx = std::max(a.mx, v);
             ++a.k;
-            if (q % stride == 0)
-              points << fmt::format("{},{},{:.6g},{:.6g}\n", name, kind == 0 ? "fluid" : "ghost", s,
+            if (q % stride == 0) {
+              points << fmt::format("{},{},{:.6g},{:.6g}", name, kind == 0 ? "fluid" : "ghost", s,
                                     v);
+              const Vec<D>& xq = kind == 0 ? P.x[q] : G.x[q];
+              for (int k = 0; k < D; ++k) points << fmt::format(",{:.6g}", xq[k]);
+              points << "\n";
+            }
           }
           for (const auto& [b, a] : bins) {
             const double mean = a.s / a.k;

@@ -14,7 +14,7 @@
 //   node_density_ghosts_near_wall (count).
 // Files (when out_dir is set): node_density_binned.csv (map, kind, bin centre of the signed
 // distance to the wall — negative behind it — mean/std/min/max of n/n_ref, count) and
-// node_density_points.csv (a subsample: map, kind, distance, n/n_ref).
+// node_density_points.csv (a subsample: map, kind, distance, n/n_ref, position x0..x{D-1}).
 #include <memory>
 
 #include "curvsph/analysis/analysis.hpp"

@@ -361,8 +361,8 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     c.relax.max_steps = relax.integer("max_steps", 2000);
     if (c.relax.max_steps < 0) relax.fail(relax.key("max_steps"), "must be >= 0");
     c.relax.tolerance = relax.positive("tolerance", 1e-3);
-    c.relax.map =
-        relax.choice("map", {"mirror", "mirror_beta", "density_preserving"}, c.boundary.map);
+    c.relax.map = relax.choice("map", {"mirror", "mirror_beta", "density_preserving", "integrals"},
+                               c.boundary.map);
   }
 
   const Keys time = top.sub("time");

@@ -56,7 +56,8 @@ struct BoundarySpec {
 };
 
 // setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation
-// (default: boundary.map).
+// (default: boundary.map), or `integrals`: the boundary-integral packing of
+// setup/relax_integrals.hpp (one fluid with a box region).
 struct RelaxSpec {
   bool enabled = false;
   long max_steps = 2000;

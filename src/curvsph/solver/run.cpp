@@ -158,8 +158,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   log("{} particles, dimension {}, dx = {}, h = {}, threads = {}, ranks = {}", n_particles, D, c.dx,
       c.h(), omp_get_max_threads(), comm.size());
   if (const auto& rr = solver.relax_result())
-    log("relaxation: {} steps in {:.2f} s, node-density spread {:.4g} -> {:.4g} (tolerance {})",
-        rr->steps, rr->seconds, rr->spread_initial, rr->spread, c.relax.tolerance);
+    log("relaxation: {} steps in {:.2f} s, {} {:.4g} -> {:.4g} (tolerance {})", rr->steps,
+        rr->seconds, c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread",
+        rr->spread_initial, rr->spread, c.relax.tolerance);
 
   std::unique_ptr<ProbeWriter<D>> probes;
   if (writer && !c.probes.empty())

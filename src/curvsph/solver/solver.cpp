@@ -8,6 +8,7 @@
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/physics/density.hpp"
@@ -15,6 +16,7 @@
 #include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/generate.hpp"
+#include "curvsph/setup/relax_integrals.hpp"
 
 namespace curvsph {
 namespace {
@@ -58,7 +60,20 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
       throw InputError(c.file_name(), "domain", "periodic axes need domain.min and domain.max");
   cells_.configure(W_.support, lo, hi, c.periodic);
   for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
-  if (c.relax.enabled) {
+  if (c.relax.enabled && c.relax.map == "integrals") {
+    // BI packing (setup/relax_integrals.hpp) against the closure of the fluid region: its box
+    // faces, walls and free faces alike.
+    if (c.fluids.size() != 1 || c.fluids[0].region.kind != RegionSpec::Kind::box)
+      throw InputError(c.file_name(), "setup.relax.map",
+                       "integrals packing needs one fluid with a box region");
+    const RegionSpec& reg = c.fluids[0].region;
+    const BoxWall<D> closure(reg.min.head<D>(), reg.max.head<D>(), FluidSide::inside);
+    IntegralsRelaxOptions ro;
+    ro.max_steps = c.relax.max_steps;
+    ro.tolerance = c.relax.tolerance;
+    ro.dx = c.dx;
+    relax_ = relax_particles_integrals<D>(P_.x, closure, cells_, W_, ro);
+  } else if (c.relax.enabled) {
     RelaxOptions ro;
     ro.max_steps = c.relax.max_steps;
     ro.tolerance = c.relax.tolerance;

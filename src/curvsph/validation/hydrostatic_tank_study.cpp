@@ -132,6 +132,10 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "compressible balance dp/dz = rho(p) g (rho0 g (H - y) would leave 1 % of g "
         "unbalanced at the bottom; against that reference the balanced field starts at an "
         "error of 0.0022). "
+        "The lattice is first packed for the BI operators (`setup.relax.map: integrals`, "
+        "setup/relax_integrals.hpp: max h|R| < 1e-4 for R_i = sum_j V_j grad W_ij - sum_b W_ib "
+        "n_b A_b); on the bare lattice R_i leaves -1.76 g on the first floor row at t = 0 and "
+        "the column rings at ~5 % of rho0 g H (findings.md). "
         "Geometric Shepard factor (Calderon) against the volume factor sum_j W_ij V_j (the "
         "paper's traditional formulation). Reduced time t sqrt(g/H); kinetic energy over M g H; "
         "pressure error: RMS over the particles of p - rho0 g (H - y), over rho0 g H.\n\n";

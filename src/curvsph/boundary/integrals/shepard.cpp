@@ -680,6 +680,21 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         stamp = 1;
       }
       for (std::size_t j : near) mark[j] = stamp;
+      // An edge wholly 2h or more from y (the rim of a patch is mostly made of them: an edge
+      // whose twin is not near lies on that twin, at >= 2h) takes F = F_D + F_Pext = 0 beyond
+      // the support: in the edge form below, p int [Psi_full(q) - Psi_full(|d|)] / (p^2 +
+      // t^2) dt with Psi_full = psi3 + 1/(4 pi q) = 3/(8 pi) for q >= 2 (see half_space_part)
+      // is [3/(8 pi) - Psi_full(|d|)] times the plane angle the edge subtends about the foot,
+      // atan(tb/p) - atan(ta/p): no solid angle, no quadrature. Only where the singular and
+      // polynomial parts are taken at the same point (ys = y, x not on a wall).
+      const bool same_point = y == ys;
+      const double support2 = 4.0 * h_ * h_;
+      auto beyond = [&](const Vec3d& a, const Vec3d& b) {
+        if (!same_point) return false;
+        const Vec3d e = b - a;
+        const double t = std::clamp(e.dot(y - a) / e.squaredNorm(), 0.0, 1.0);
+        return (a + t * e - y).squaredNorm() >= support2;
+      };
       // Solid angles: element j's is the signed sum of those of the triangles (f, a, b) over
       // its edges a -> b, f the foot of ys on its plane (Van Oosterom & Strackee with unit
       // vectors, signed as subtended_angle); twins cancel as for the polynomial part. A point
@@ -696,6 +711,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         for (int k = 0; k < m; ++k) {
           const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
           if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
+          if (beyond(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]))
+            continue;  // in closed form below
           const Vec3d a = (v[static_cast<std::size_t>(k)] - ys).normalized();
           const Vec3d b = (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized();
           omega -= 2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
@@ -710,7 +727,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         const Vec3d f = y + dn * n;
         const double d = dn * inv_h, d2 = d * d, psi0 = psi3(std::abs(d));
         const int m = el.vertex_count[j];
-        double sum = 0;
+        double sum = 0, far_angle = 0;
         for (int k = 0; k < m; ++k) {
           const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
           if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
@@ -720,6 +737,10 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           const double p = n.dot((a - f).cross(e)) * inv_h;
           if (p == 0.0) continue;
           const double ta = e.dot(a - f) * inv_h, tb = e.dot(b - f) * inv_h;
+          if (beyond(a, b)) {
+            far_angle += std::atan2(p * (tb - ta), p * p + ta * tb);  // exact difference
+            continue;
+          }
           double cuts[3] = {ta, tb, tb};
           int ncut = 2;
           if (ta < 0.0 && tb > 0.0) {
@@ -740,7 +761,9 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           }
           sum += p * edge;
         }
-        total += d * sum;
+        // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of far edges.
+        constexpr double inv4pi = 0.25 / std::numbers::pi;
+        total += d * sum + (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far_angle;
       }
       return total;
     };

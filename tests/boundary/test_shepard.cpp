@@ -362,3 +362,27 @@ TEST(GeometricShepardFast, MatchesBruteForceOnCurvedPatches) {
                          Vec3d(0, 0, 1.9), Vec3d(-1.0, 1.0, -1.0)})
     EXPECT_NEAR(fast(el, all, x), shepard_geometric<3>(el, x, h, fine), 1e-7) << x.transpose();
 }
+
+// The flat-face fast path of GeometricShepard (a face covering the support disc gives the
+// half-space value in closed form) against the independent radial reference, and across
+// the switch to the rim quadrature as x approaches the face's rim: a 6 x 6 face, points at
+// heights 0.02 h .. 1.99 h, sliding from the centre (disc covered) over the rim to outside.
+TEST(GeometricShepardFast, CoveredFaceClosedFormAndSwitch) {
+  const double L = 3.0;
+  const auto plane =
+      rectangle_elements(Vec3d(-L, -L, 0), Vec3d(2 * L, 0, 0), Vec3d(0, 2 * L, 0), dx);
+  std::vector<std::size_t> all(plane.size());
+  for (std::size_t j = 0; j < all.size(); ++j) all[j] = j;
+  const GeometricShepard<3> fast(plane, h);
+  for (double d : {0.02, 0.3, 0.77, 1.4, 1.99})
+    EXPECT_NEAR(fast(plane, all, Vec3d(-0.3, 0.45, d)), reference_flat_3d(d), 1e-6) << d;
+  ShepardQuadrature fine;
+  fine.gauss_points = 8;
+  fine.max_piece_over_h = 0.125;
+  for (double d : {0.02, 0.6, 1.5})
+    for (double xr = 0.0; xr <= 3.6; xr += 0.3) {
+      const Vec3d x(xr, 0.37 * xr, d);
+      EXPECT_NEAR(fast(plane, all, x), shepard_geometric<3>(plane, x, h, fine), 1e-7)
+          << x.transpose();
+    }
+}

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <numbers>
@@ -495,6 +496,74 @@ GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
         }
       }
     }
+    build_patches(el);
+  }
+}
+
+template <int D>
+void GeometricShepard<D>::build_patches(const BoundaryElements<D>& el) requires(D == 3) {
+  // Patches: connected components of the twin graph over exact flat elements (gap 0, centre
+  // in the element's plane and inside it). Elements standing for a curved wall (gap > 0)
+  // stay out: their on-wall band is handled by geometric_impl.
+  const std::size_t n = el.size();
+  const double grid = 1e-9 * h_;
+  std::vector<std::int64_t> parent(n);
+  std::vector<unsigned char> flat(n, 0);
+  for (std::size_t j = 0; j < n; ++j) {
+    parent[j] = static_cast<std::int64_t>(j);
+    const bool exact = j >= el.gap.size() || el.gap[j] == 0.0;
+    const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
+    flat[j] = exact && off <= grid && point_in_polygon(el, j, el.centre[j], 0.0);
+  }
+  auto find = [&](std::int64_t a) {
+    while (parent[static_cast<std::size_t>(a)] != a) {
+      auto& pa = parent[static_cast<std::size_t>(a)];
+      pa = parent[static_cast<std::size_t>(pa)];  // path halving
+      a = pa;
+    }
+    return a;
+  };
+  for (std::size_t j = 0; j < n; ++j)
+    for (int k = 0; k < el.vertex_count[j]; ++k) {
+      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
+      if (o < 0 || !flat[j] || !flat[static_cast<std::size_t>(o)]) continue;
+      const std::int64_t a = find(static_cast<std::int64_t>(j)), b = find(o);
+      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  patch_.assign(n, -1);
+  std::vector<std::int32_t> id(n, -1);
+  std::int32_t count = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!flat[j]) continue;
+    const auto root = static_cast<std::size_t>(find(static_cast<std::int64_t>(j)));
+    if (id[root] < 0) id[root] = count++;
+    patch_[j] = id[root];
+  }
+  // Rim of every patch: the edges whose twin is not a member of the same patch. clear_[j] =
+  // distance from centre j to its patch's rim (brute force over the rim, once at set-up:
+  // elements x rim edges of one patch). The patch is a union of elements glued along twin
+  // edges, so its boundary lies on rim edges and the disc of radius clear_[j] about the
+  // centre (inside element j) is inside the patch; a non-conforming mesh (T-junctions)
+  // leaves inner edges without twins, which only makes clear_ smaller (conservative).
+  std::vector<std::vector<std::array<Vec3d, 2>>> rim(static_cast<std::size_t>(count));
+  for (std::size_t j = 0; j < n; ++j) {
+    if (patch_[j] < 0) continue;
+    const auto& v = el.vertices[j];
+    const int m = el.vertex_count[j];
+    for (int k = 0; k < m; ++k) {
+      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
+      if (o >= 0 && patch_[static_cast<std::size_t>(o)] == patch_[j]) continue;
+      rim[static_cast<std::size_t>(patch_[j])].push_back(
+          {v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]});
+    }
+  }
+  clear_.assign(n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (patch_[j] < 0) continue;
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& e : rim[static_cast<std::size_t>(patch_[j])])
+      d = std::min(d, segment_distance(e[0], e[1], el.centre[j]));
+    clear_[j] = d;
   }
 }
 
@@ -510,6 +579,20 @@ inline double psi3(double q) {
               q2 +
           7.0 / 32.0 * q2) /
          pi;
+}
+
+// The contribution 1 - gamma of a flat face that covers the whole support disc of x on its
+// plane, x at distance delta = d/h (0 < delta < 2) on the fluid side. From the edge form in
+// operator(): with F = F_D + F_Pext the radial antiderivative is Psi_full(q) = psi3(q) +
+// 1/(4 pi q) (the singular part, h^3 F_D = -1/(4 pi q^3), gives +1/(4 pi q)), which is the
+// constant 3/(8 pi) for q >= 2 (F = 0 there). A rim entirely outside the support therefore
+// gives delta [Psi_full(delta) - 3/(8 pi)] times the angle it subtends about the foot, 2 pi:
+//   1 - gamma = 1/2 - (3/4) delta + 2 pi delta psi3(delta).
+// Checks: 1/2 at delta = 0 (on the wall), 0 at delta = 2 (psi3(2) = 1/(4 pi)), and
+// d(gamma)/d(delta) = 3/4 at the wall = 2 pi int_0^2 W(q) q dq (the kernel's mass on the
+// wall plane). Tested against the radial quadrature of tests/boundary/test_shepard.cpp.
+inline double half_space_part(double delta) {
+  return 0.5 - 0.75 * delta + 2.0 * std::numbers::pi * delta * psi3(delta);
 }
 
 // H(s_i) = [Psi(sqrt(d^2 + s_i)) - Psi0] / s_i at s_i = p^2 + t_i^2, t_i = t0 + x_i dl, for
@@ -597,6 +680,21 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         stamp = 1;
       }
       for (std::size_t j : near) mark[j] = stamp;
+      // An edge wholly 2h or more from y (the rim of a patch is mostly made of them: an edge
+      // whose twin is not near lies on that twin, at >= 2h) takes F = F_D + F_Pext = 0 beyond
+      // the support: in the edge form below, p int [Psi_full(q) - Psi_full(|d|)] / (p^2 +
+      // t^2) dt with Psi_full = psi3 + 1/(4 pi q) = 3/(8 pi) for q >= 2 (see half_space_part)
+      // is [3/(8 pi) - Psi_full(|d|)] times the plane angle the edge subtends about the foot,
+      // atan(tb/p) - atan(ta/p): no solid angle, no quadrature. Only where the singular and
+      // polynomial parts are taken at the same point (ys = y, x not on a wall).
+      const bool same_point = y == ys;
+      const double support2 = 4.0 * h_ * h_;
+      auto beyond = [&](const Vec3d& a, const Vec3d& b) {
+        if (!same_point) return false;
+        const Vec3d e = b - a;
+        const double t = std::clamp(e.dot(y - a) / e.squaredNorm(), 0.0, 1.0);
+        return (a + t * e - y).squaredNorm() >= support2;
+      };
       // Solid angles: element j's is the signed sum of those of the triangles (f, a, b) over
       // its edges a -> b, f the foot of ys on its plane (Van Oosterom & Strackee with unit
       // vectors, signed as subtended_angle); twins cancel as for the polynomial part. A point
@@ -613,6 +711,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         for (int k = 0; k < m; ++k) {
           const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
           if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
+          if (beyond(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]))
+            continue;  // in closed form below
           const Vec3d a = (v[static_cast<std::size_t>(k)] - ys).normalized();
           const Vec3d b = (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized();
           omega -= 2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
@@ -627,7 +727,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         const Vec3d f = y + dn * n;
         const double d = dn * inv_h, d2 = d * d, psi0 = psi3(std::abs(d));
         const int m = el.vertex_count[j];
-        double sum = 0;
+        double sum = 0, far_angle = 0;
         for (int k = 0; k < m; ++k) {
           const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
           if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
@@ -637,6 +737,10 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           const double p = n.dot((a - f).cross(e)) * inv_h;
           if (p == 0.0) continue;
           const double ta = e.dot(a - f) * inv_h, tb = e.dot(b - f) * inv_h;
+          if (beyond(a, b)) {
+            far_angle += std::atan2(p * (tb - ta), p * p + ta * tb);  // exact difference
+            continue;
+          }
           double cuts[3] = {ta, tb, tb};
           int ncut = 2;
           if (ta < 0.0 && tb > 0.0) {
@@ -657,12 +761,79 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           }
           sum += p * edge;
         }
-        total += d * sum;
+        // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of far edges.
+        constexpr double inv4pi = 0.25 / std::numbers::pi;
+        total += d * sum + (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far_angle;
       }
       return total;
     };
-    return geometric_impl<D>(el, x, h_, quad_, for_each, true, parts, radius_.data(),
-                             reach_.data());
+    // Flat faces that cover the support disc of x (most particles near a wall): their
+    // contribution in closed form (half_space_part), their elements skipped; a face whose
+    // plane is 2h or more from x contributes nothing. Decided per patch (patch_, clear_):
+    // the disc of radius rho = sqrt(4h^2 - d^2) about the foot f lies in the patch when
+    // |f - c_j| + rho <= clear_[j] for any member j among the candidates. Everything else
+    // (faces cut by their rim within the support, curved patches, points on or behind a
+    // face) takes the rim quadrature above, which is additive over elements.
+    struct Slot {
+      std::int32_t patch;
+      enum : unsigned char { none, pending, covered, rest } state;
+      double dn, rho;
+      Vec3d foot;
+    };
+    constexpr std::size_t max_slots = 16;
+    std::array<Slot, max_slots> slots;
+    std::size_t nslots = 0;
+    const double support = 2.0 * h_;
+    const double on_wall = 2.0 * quad_.on_wall_tolerance * h_;
+    auto slot_of = [&](std::int32_t pid) -> Slot* {
+      for (std::size_t k = 0; k < nslots; ++k)
+        if (slots[k].patch == pid) return &slots[k];
+      return nullptr;
+    };
+    for (std::size_t j : candidates) {
+      const std::int32_t pid = patch_[j];
+      if (pid < 0) continue;
+      Slot* s = slot_of(pid);
+      if (!s) {
+        if (nslots == max_slots) continue;  // left to the quadrature (pass 2)
+        s = &slots[nslots++];
+        s->patch = pid;
+        s->dn = el.normal[j].dot(x - el.vertices[j][0]);  // > 0 on the fluid side
+        if (std::abs(s->dn) >= support) {
+          s->state = Slot::none;
+        } else if (s->dn <= on_wall) {
+          s->state = Slot::rest;  // on or behind the face: geometric_impl's limits
+        } else {
+          s->state = Slot::pending;
+          s->rho = std::sqrt(support * support - s->dn * s->dn);
+          s->foot = x - s->dn * el.normal[j];
+        }
+      }
+      if (s->state == Slot::pending) {
+        const double room = clear_[j] - s->rho;
+        if (room >= 0 && (s->foot - el.centre[j]).squaredNorm() <= room * room)
+          s->state = Slot::covered;
+      }
+    }
+    double covered = 0;
+    for (std::size_t k = 0; k < nslots; ++k) {
+      if (slots[k].state == Slot::covered) covered += half_space_part(slots[k].dn * F.inv_h);
+      if (slots[k].state == Slot::pending) slots[k].state = Slot::rest;
+    }
+    thread_local std::vector<std::size_t> rest;
+    rest.clear();
+    for (std::size_t j : candidates) {
+      const std::int32_t pid = patch_[j];
+      const Slot* s = pid < 0 ? nullptr : slot_of(pid);
+      if (!s || s->state == Slot::rest) rest.push_back(j);
+    }
+    if (rest.empty()) return 1.0 - covered;
+    auto for_rest = [&](const auto& fn) {
+      for (std::size_t j : rest) fn(j);
+    };
+    return geometric_impl<D>(el, x, h_, quad_, for_rest, true, parts, radius_.data(),
+                             reach_.data()) -
+           covered;
   }
 }
 

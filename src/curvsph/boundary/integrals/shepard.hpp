@@ -71,10 +71,12 @@ double shepard_monolithic(const BoundaryElements<D>& el, std::span<const std::si
 // polynomial part of each planar element is integrated exactly in the radial direction about
 // the foot of x and with Gauss points along the element's edges (derivation in shepard.cpp),
 // and an edge shared by two coplanar elements that are both in the sum cancels: only the rim
-// of the patch of a flat wall near x is integrated. Elements whose distance from x is >= 2h
-// are left out (F = F_D + F_Pext = 0 on them). The two evaluations agree to the quadrature
-// error of shepard_geometric (tests/boundary/test_shepard_fast.cpp); this one is the more
-// accurate. 2-D elements take shepard_geometric's path (a 2-D wall costs little).
+// of the patch of a flat wall near x is integrated. A flat face that covers the whole
+// support disc of x on its plane gives the half-space value in closed form, without
+// visiting its elements' edges (shepard.cpp, half_space_part). Elements whose distance from x is >=
+// 2h are left out (F = F_D + F_Pext = 0 on them). The two evaluations agree to the quadrature error
+// of shepard_geometric (tests/boundary/test_shepard_fast.cpp); this one is the more accurate. 2-D
+// elements take shepard_geometric's path (a 2-D wall costs little).
 template <int D>
 class GeometricShepard {
  public:
@@ -87,12 +89,20 @@ class GeometricShepard {
   double h() const { return h_; }
 
  private:
+  void build_patches(const BoundaryElements<D>& el) requires(D == 3);
+
   double h_ = 0;
   ShepardQuadrature quad_;
   // twin_[4 j + k]: the coplanar element sharing edge k of element j (reversed), or -1 (3-D).
   std::vector<std::int64_t> twin_;
   std::vector<double> radius_;  // bounding radius of every element (candidate test)
   std::vector<double> reach_;   // d(x, element) <= |x - centre| + reach (candidate test)
+  // Flat-face fast path (3-D, operator()): patch_[j] numbers the connected set of coplanar
+  // flat elements joined by twins (-1: not part of one), clear_[j] the distance from element
+  // j's centre to the nearest edge of its patch that has no twin (the patch's rim), so the
+  // disc of radius clear_[j] about the centre lies inside the patch.
+  std::vector<std::int32_t> patch_;
+  std::vector<double> clear_;
 };
 
 template <int D>

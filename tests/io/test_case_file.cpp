@@ -272,12 +272,12 @@ TEST(CaseFile, SetNewNestedValueTakesEffect) {
   YAML::Node root = valid();
   root.remove("output");
   apply_overrides(root,
-                  {"output.probe_every=0.25", "setup.jitter=true", "time.dt_max=1e-4",
+                  {"output.probe_every=0.25", "setup.random_seed=7", "time.dt_max=1e-4",
                    "forcing.drive.v0=0.5", "forcing.drive.tau=2", "fluids.1.rho0=1.5",
                    "fluids.1.region.disk.center=[0.5, 0.5]", "fluids.1.region.disk.radius=0.1"});
   const Case c = read_case(root, "c.yaml");
   EXPECT_DOUBLE_EQ(c.probe_every, 0.25);
-  EXPECT_TRUE(c.lattice_jitter);
+  EXPECT_EQ(c.random_seed, 7u);
   EXPECT_DOUBLE_EQ(c.dt_max, 1e-4);
   EXPECT_TRUE(c.drive);
   EXPECT_DOUBLE_EQ(c.drive_v0, 0.5);

@@ -349,11 +349,10 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     bnd.fail(bnd.key("method"), "the case has walls; choose ghost or integrals");
 
   const Keys setup = top.sub("setup");
-  setup.allow({"random_seed", "relax", "jitter"});
+  setup.allow({"random_seed", "relax"});
   const long seed = setup.integer("random_seed", 1);
   if (seed < 0) setup.fail(setup.key("random_seed"), "must be >= 0");
   c.random_seed = static_cast<unsigned>(seed);
-  c.lattice_jitter = setup.boolean("jitter", false);
   if (setup.has("relax")) {
     const Keys relax = setup.sub("relax");
     relax.allow({"max_steps", "tolerance", "map"});

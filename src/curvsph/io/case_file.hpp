@@ -98,7 +98,6 @@ struct Case {
   BoundarySpec boundary;
   double shifting = 0;  // particle shifting coefficient C (0: off); see particle_shifting.hpp
   unsigned random_seed = 1;
-  bool lattice_jitter = false;
   RelaxSpec relax;
   double t_end = 0;
   double cfl = 0.2;

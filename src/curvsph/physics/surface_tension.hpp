@@ -72,8 +72,10 @@ void add_surface_tension(Particles<D>& P, const CellList<D>& cells, const Wendla
   // Image k stands for the fluid particle s.lookup[k]: its source, except at walls with a
   // contact angle (below).
   const Index n_images = images ? static_cast<Index>(G.x->size()) : 0;
-  s.lookup.assign(G.source ? G.source->begin() : s.lookup.end(),
-                  G.source ? G.source->end() : s.lookup.end());
+  if (images)
+    s.lookup.assign(G.source->begin(), G.source->end());
+  else
+    s.lookup.clear();
   auto colour_gradient = [&](Index i) {
     Vec<D> g = Vec<D>::Zero();
     if (!in_pair(i)) return g;

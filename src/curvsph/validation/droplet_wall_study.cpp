@@ -1,8 +1,8 @@
 // `curvsph validate droplet_wall`: Barker & Neethling §4.2, Fig. 10 (issue #6). The drop of
 // cases/droplet_wall.yaml (density ratio 10, NURBS wall with a dip, CSF surface tension,
-// Brackbill wall adhesion) run with the imposed contact angle 30, 60, 90, 120 deg; the angle
-// measured by the analysis `droplet_wall` (circle fits at both contact points) is compared
-// with the imposed one. Plots: measured against imposed angle, the final shapes with the
+// contact angle through the wall images) run with the imposed contact angle 30, 60, 90, 120 deg;
+// the angle measured by the analysis `droplet_wall` (circle fits at both contact points) is
+// compared with the imposed one. Plots: measured against imposed angle, the final shapes with the
 // fitted circles (Fig. 10), the angle histories.
 #include <fmt/format.h>
 
@@ -81,14 +81,18 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
      << "Case `cases/droplet_wall.yaml` (sizes and time scales in its header): a drop "
         "(rho = 1000) in an ambient fluid (rho = 100), both mu = 0.001 Pa s, no gravity, "
         "sigma = 1e-5 N/m, on a periodic floor that is a clamped cubic B-spline with a smooth "
-        "dip 0.484 mm deep, free-slip ghost walls (mirror_beta), dx = R0/10 with R0 = 1 mm the "
+        "dip 0.484 mm deep, free-slip ghost walls (plain mirror), dx = R0/10 with R0 = 1 mm the "
         "radius of the initial half disk centred at the bottom of the dip. The wall carries "
         "`contact_angle`, swept here with `--set walls.0.contact_angle=THETA`. Regenerate with "
         "`build/curvsph validate droplet_wall`.\n\n"
-        "Contact angle model (src/curvsph/physics/contact_angle.hpp): Brackbill et al. 1992 wall "
-        "adhesion, the interface normal of every particle of the pair within 0.8 h of the wall "
-        "turned to n_w cos(theta) + t_w sin(theta), theta inside the drop, n_w from the NURBS "
-        "projection; curvature from the corrected normals, ghosts in both CSF sums.\n\n"
+        "Contact angle model (src/curvsph/physics/surface_tension.hpp, contact_angle.hpp): the "
+        "wall images continue the interface through the wall at the imposed angle theta (inside "
+        "the drop). An image at depth d beneath the fluid point x_s takes the colour of the fluid "
+        "particle nearest x_s - 2 d cot(theta) t_w (the mirror map sheared along the wall, t_w "
+        "along the wall away from the drop, from the source's colour gradient), and that "
+        "particle's unit normal reflected across the plane normal to the interface tangent "
+        "n_w sin(theta) - t_w cos(theta); at 90 deg both are the plain mirror. No particle normal "
+        "is turned; n_w from the NURBS projection; ghosts in both CSF sums.\n\n"
         "Measurement (src/curvsph/analysis/contact_angle_fit.hpp): interface points = midpoints "
         "of unlike particle pairs closer than 1.5 dx; at each end of the drop the outermost one "
         "within 1.5 dx of the wall is the contact point; a circle (Kasa fit) through the "

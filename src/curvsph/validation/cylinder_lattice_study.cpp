@@ -38,7 +38,9 @@ namespace {
 constexpr double kAdmitMargin = 0.999;
 
 struct LowRun {
+  std::string label;  // the map, or mirror_coarsest (the mirror at its own coarsest dx)
   std::string map;
+  double dx = 0;
   double v0 = 0;
   int seed = 0;
   double t_max = 0;
@@ -51,6 +53,7 @@ struct LowRun {
 
 LowRun make_run(const std::string& map, double v0, int seed) {
   LowRun run;
+  run.label = map;
   run.map = map;
   run.v0 = v0;
   run.seed = seed;
@@ -104,6 +107,17 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   const Case base = read_case(path, {});
   const auto [depth_limit, r_obstacle] = ghost_depth_limit(base);
   const double low_dx = kAdmitMargin * depth_limit / (2.0 * base.h_over_dx);
+  // Diagnostic: the mirror at the coarsest dx it admits itself (its ghosts reach the centre at
+  // depth r, so 2h < r): the nearest this code gets to the paper's N = 100 regime.
+  const double mirror_depth_limit = ghost_max_depth_convex(GhostMapKind::mirror, 2, r_obstacle);
+  const double mirror_dx = kAdmitMargin * mirror_depth_limit / (2.0 * base.h_over_dx);
+  struct Variant {
+    std::string label, map;
+    double dx;
+  };
+  const std::vector<Variant> variants = {{"mirror", "mirror", low_dx},
+                                         {"density_preserving", "density_preserving", low_dx},
+                                         {"mirror_coarsest", "mirror", mirror_dx}};
   const int seeds = ctx.seeds > 0 ? ctx.seeds : (ctx.quick ? 1 : 20);
   std::vector<double> v0s;
   for (int k = 1; k <= 15; ++k)
@@ -127,6 +141,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       run.penetrations = std::stol(f[6]);
       run.blowup = std::stoi(f[7]);
       run.particles = std::stol(f[8]);
+      run.dx = std::stod(f[3]);
       run.done = true;
       cached[run_key(run.map, run.v0, run.seed, std::stod(f[3]), std::stod(f[4]))] = run;
     }
@@ -137,16 +152,19 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   std::vector<LowRun> runs;
   for (int s = 1; s <= seeds; ++s)
     for (double v0 : v0s)
-      for (const auto& map : maps) {
-        const auto it = cached.find(run_key(map, v0, s, low_dx, t_end10));
-        runs.push_back(it != cached.end() ? it->second : make_run(map, v0, s));
+      for (const auto& var : variants) {
+        const auto it = cached.find(run_key(var.map, v0, s, var.dx, t_end10));
+        LowRun run = it != cached.end() ? it->second : make_run(var.map, v0, s);
+        run.label = var.label;
+        run.dx = var.dx;
+        runs.push_back(run);
       }
   struct Job {
     int fig9 = -1;  // index into maps for a Fig. 9 run, else -1
     std::size_t low = 0;
   };
   std::vector<Job> jobs;
-  const std::size_t per_seed = v0s.size() * maps.size();
+  const std::size_t per_seed = v0s.size() * variants.size();
   for (std::size_t k = 0; k < runs.size(); ++k) {
     if (k == per_seed)
       for (int m = 0; m < static_cast<int>(maps.size()); ++m) jobs.push_back({m, 0});
@@ -159,7 +177,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   const std::string header = "map,v0,seed,dx,t_end,t_max,penetrations,blowup,particles\n";
   auto csv_row = [&](const LowRun& run) {
     return fmt::format("{},{:.2f},{},{:.10g},{:.6g},{:.4f},{},{},{}\n", run.map, run.v0, run.seed,
-                       low_dx, t_end10, run.t_max, run.penetrations, run.blowup, run.particles);
+                       run.dx, t_end10, run.t_max, run.penetrations, run.blowup, run.particles);
   };
   {
     std::ofstream csv(runs_csv);
@@ -213,7 +231,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       const Case c =
           read_case(path, {"boundary.map=" + run.map, fmt::format("forcing.drive.v0={}", run.v0),
                            fmt::format("setup.random_seed={}", run.seed),
-                           fmt::format("resolution.dx={:.17g}", low_dx),
+                           fmt::format("resolution.dx={:.17g}", run.dx),
                            fmt::format("time.end={}", t_end10)});
       RunOptions o;
       o.threads = 1;
@@ -235,7 +253,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       ++finished;
       if (run.done) csv << csv_row(run) << std::flush;
       std::cerr << fmt::format("cylinder_lattice: [{}/{}] {} v0 = {:.2f} seed {}: {}\n", finished,
-                               jobs.size(), run.map, run.v0, run.seed,
+                               jobs.size(), run.label, run.v0, run.seed,
                                run.done ? fmt::format("t_max {:.3f}", run.t_max) : run.refused);
     }
   }
@@ -276,24 +294,27 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
     complete_seeds = s;
   }
   std::map<std::string, std::map<double, std::vector<const LowRun*>>> by;
-  long particles_low = 0;
+  std::map<std::string, long> particles;
   std::string refusals;
   for (const auto& run : runs) {
-    if (!run.refused.empty() && refusals.empty()) refusals = run.map + ": " + run.refused;
+    if (!run.refused.empty() && refusals.empty()) refusals = run.label + ": " + run.refused;
     if (!run.done || run.seed > complete_seeds) continue;
-    by[run.map][std::round(run.v0 * 100) / 100].push_back(&run);
-    particles_low = run.particles;
+    by[run.label][std::round(run.v0 * 100) / 100].push_back(&run);
+    particles[run.label] = run.particles;
   }
+  const long particles_low = particles["density_preserving"];
   std::ofstream mcsv(ctx.out_dir / "tmax_mean.csv");
   mcsv << "map,v0,tmax_mean,tmax_min,runs,runs_penetrated,runs_blowup\n";
   std::string table10 =
       "| v0 | mean t_max mirror | min | penetrated / blow-up runs | mean t_max "
-      "density_preserving | min | penetrated / blow-up runs |\n|---|---|---|---|---|---|---|\n";
+      "density_preserving | min | penetrated / blow-up runs | mean t_max mirror_coarsest | min "
+      "| penetrated / blow-up runs |\n|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, double> lowest;
   std::map<std::string, long> n_pen, n_blow, n_runs;
   for (double v0 : v0s) {
     std::string row = fmt::format("| {:.2f} |", v0);
-    for (const auto& map : maps) {
+    for (const auto& var : variants) {
+      const std::string& map = var.label;
       const auto it = by[map].find(std::round(v0 * 100) / 100);
       if (it == by[map].end() || it->second.empty()) {
         row += " - | - | - |";
@@ -332,7 +353,12 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   r.metrics["low_resolution_seeds"] = complete_seeds;
   r.metrics["low_resolution_seeds_requested"] = seeds;
   r.metrics["low_resolution_t_end"] = t_end10;
-  for (const auto& map : maps) {
+  r.metrics["tmax_mean_min_mirror_coarsest"] =
+      lowest.count("mirror_coarsest") ? lowest["mirror_coarsest"] : 0.0;
+  r.metrics["mirror_coarsest_particles"] = particles["mirror_coarsest"];
+  r.metrics["mirror_coarsest_dx"] = mirror_dx;
+  for (const auto& var : variants) {
+    const std::string& map = var.label;
     r.metrics["runs_" + map] = n_runs[map];
     r.metrics["runs_penetrated_" + map] = n_pen[map];
     r.metrics["runs_blowup_" + map] = n_blow[map];
@@ -360,7 +386,10 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
      << table9
      << "\nWall seconds with one thread on the shared, loaded 2-core machine (not "
         "comparable between runs). Mean v_x histories: `fig9_*/history.csv`.\n\n"
-     << "![v_y contours](fig9_vy.png)\n\n"
+     << "Contours at the paper's levels {0, ±1/12, ±1/6, ±1/4} of v_y, smoothed onto a grid "
+        "with the kernel (h = 0.03): mirror as the heat map and red lines, density_preserving "
+        "as blue dashed lines.\n\n![v_y contours](fig9_vy.png)\n\n"
+        "![mean v_x history](fig9_history.png)\n\n"
      << "## Fig. 10: t_max (eq. 37) at low resolution\n\n"
      << fmt::format(
             "N = {} particles (dx = {:.6g}, h = 1.3 dx = {:.6g}), {} random initialisations per "
@@ -370,6 +399,12 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
             "the paper's ghost accumulation would show).\n\n",
             particles_low, low_dx, low_dx * base.h_over_dx, complete_seeds, seeds, t_end10)
      << table10 << "\n"
+     << fmt::format(
+            "`mirror_coarsest` is a diagnostic, not part of Fig. 10: the mirror map at the "
+            "coarsest dx it admits itself (its ghosts reach the obstacle's centre at depth r, "
+            "so 2h < r: dx = {:.6g}, N = {}), the nearest this code gets to the paper's N = 100 "
+            "with either map.\n\n",
+            mirror_dx, particles["mirror_coarsest"])
      << (refusals.empty() ? "" : "Refused or failed at set-up: " + refusals + "\n\n")
      << summary_markdown(r.summary) << "\n![t_max vs v0](fig10_tmax.png)\n\n"
      << "### Why not the paper's N = 100\n\n"
@@ -384,7 +419,8 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
             "`ghost_max_depth_convex`). Every fluid particle within the kernel support 2h of "
             "the wall needs its ghost, so DESIGN.md's refusal rule requires 2h < {:.6g}, "
             "h < {:.6g} (the set-up refusal says \"the largest h that works is h < {:.6g}\"), "
-            "dx < {:.6g} at h/dx = 1.3: about {:.0f} particles in the fluid area 1 - pi r^2. "
+            "dx < {:.6g} at h/dx = 1.3: about {:.0f} particles (fluid area 1 - pi r^2 over dx^2; "
+            "the random fill puts slightly fewer). "
             "This study runs at {:.3f} of that limit.\n\n"
             "N = 100 means dx = {:.3f}, h = {:.3f}, 2h = {:.3f}: a kernel support larger than the "
             "obstacle's radius, for which eq. 21 has no real root over most of the support "

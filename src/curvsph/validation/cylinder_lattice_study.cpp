@@ -388,8 +388,14 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
         "comparable between runs). Mean v_x histories: `fig9_*/history.csv`.\n\n"
      << "Contours at the paper's levels {0, ±1/12, ±1/6, ±1/4} of v_y, smoothed onto a grid "
         "with the kernel (h = 0.03): mirror as the heat map and red lines, density_preserving "
-        "as blue dashed lines.\n\n![v_y contours](fig9_vy.png)\n\n"
+        "as blue dashed lines. "
+     << read_text(ctx.out_dir / "fig9_compare.md")
+     << "\n![v_y contours](fig9_vy.png)\n\n"
         "![mean v_x history](fig9_history.png)\n\n"
+     << "Particle density next to the obstacle at the end (fill of the first layer and the "
+        "closest particle; `radial_density.csv`):\n\n"
+     << read_text(ctx.out_dir / "radial_density.md")
+     << "\n![radial density](fig9_radial_density.png)\n\n"
      << "## Fig. 10: t_max (eq. 37) at low resolution\n\n"
      << fmt::format(
             "N = {} particles (dx = {:.6g}, h = 1.3 dx = {:.6g}), {} random initialisations per "
@@ -407,6 +413,8 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
             mirror_dx, particles["mirror_coarsest"])
      << (refusals.empty() ? "" : "Refused or failed at set-up: " + refusals + "\n\n")
      << summary_markdown(r.summary) << "\n![t_max vs v0](fig10_tmax.png)\n\n"
+     << "Measured diagnosis of the events and of what separates the maps here: "
+        "[findings.md](findings.md).\n\n"
      << "### Why not the paper's N = 100\n\n"
      << fmt::format(
             "With the fluid outside the obstacle the wall has kappa = -1/r, so J(zeta) = 1 - "

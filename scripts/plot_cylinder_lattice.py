@@ -147,7 +147,7 @@ if os.path.exists(p):
         ax.plot(v0, [float(x["tmax_mean"]) for x in r], st, color=c, ms=ms,
                 label=f"{m}: mean of {n} runs")
         ax.plot(v0, [float(x["tmax_min"]) for x in r], "v:", color=c, ms=4, label=f"{m}: min")
-    ax.text(0.02, 0.98, "mirror_coarsest: diagnostic, the mirror at its own coarsest dx",
+    ax.text(0.02, 0.5, "mirror_coarsest: diagnostic, the mirror at its own coarsest dx",
             transform=ax.transAxes, fontsize=7, va="top")
     ax.set_xlabel("v0")
     ax.set_ylabel("t_max (s)")

@@ -67,20 +67,93 @@ if fm is not None and fd is not None:
     fig.tight_layout()
     fig.savefig(os.path.join(out, "fig9_vy.png"), dpi=110)
     plt.close(fig)
+    # How different are the two maps' fields? RMS of the difference over the grid (fluid only),
+    # relative to the largest |v_y| of the mirror field.
+    ok = np.isfinite(vm) & np.isfinite(vd)
+    rms = np.sqrt(np.mean((vm[ok] - vd[ok]) ** 2))
+    with open(os.path.join(out, "fig9_compare.md"), "w") as f:
+        f.write(f"RMS of v_y(mirror) - v_y(density_preserving) on the grid: {rms:.4f} "
+                f"({rms / np.abs(vm[ok]).max():.3f} of max |v_y| = {np.abs(vm[ok]).max():.3f}).\n")
+
+# Fig. 9 companion: particle number density against the distance from the obstacle's wall at
+# the end, normalised by the mean N / (1 - pi r^2): does a map leave a depleted layer (a
+# stand-off gap) next to the wall? Also written as radial_density.csv and radial_density.md
+# (the fill of the first layer, 0 < r - R < dx, which the study's README quotes).
+R = 0.2
+if fm is not None and fd is not None:
+    fig, ax = plt.subplots(figsize=(5.8, 4.2))
+    rows_md = []
+    edges = np.arange(0.0, 5.0 + 1e-12, 0.25)  # in units of each run's dx
+    prof = {}
+    for m, a, c in (("mirror", fm, "tab:red"), ("density_preserving", fd, "tab:blue")):
+        dx = np.sqrt((1 - np.pi * R * R) / len(a))
+        rr = (np.hypot(a[:, 0], a[:, 1]) - R) / dx
+        nbar = len(a) / (1 - np.pi * R * R)
+        cnt, _ = np.histogram(rr, bins=edges)
+        ring = np.pi * ((R + dx * edges[1:]) ** 2 - (R + dx * edges[:-1]) ** 2)
+        prof[m] = cnt / (ring * nbar)
+        ax.step(edges[:-1], prof[m], where="post", color=c, label=m)
+        first = np.count_nonzero((rr > 0) & (rr < 1)) / (np.pi * ((R + dx) ** 2 - R * R) * nbar)
+        near = rr[rr > 0].min()
+        rows_md.append(f"| {m} | {len(a)} | {dx:.5f} | {first:.3f} | {near:.3f} |")
+    with open(os.path.join(out, "radial_density.csv"), "w") as f:
+        f.write("r_minus_R_over_dx_lo,r_minus_R_over_dx_hi,n_over_nbar_mirror,"
+                "n_over_nbar_density_preserving\n")
+        for k in range(len(edges) - 1):
+            f.write(f"{edges[k]:.2f},{edges[k + 1]:.2f},{prof['mirror'][k]:.4f},"
+                    f"{prof['density_preserving'][k]:.4f}\n")
+    with open(os.path.join(out, "radial_density.md"), "w") as f:
+        f.write("| map | particles | dx = sqrt(area / N) | fill of 0 < r - R < dx (n / n_mean) "
+                "| closest particle (r - R) / dx |\n|---|---|---|---|---|\n")
+        f.write("\n".join(rows_md) + "\n")
+    ax.axhline(1.0, color="0.5", lw=0.8)
+    ax.set_xlabel("(r - R) / dx (distance from the obstacle's wall)")
+    ax.set_ylabel("n / n_mean")
+    ax.set_title("Fig. 9 runs at the end: particle density next to the obstacle")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fig9_radial_density.png"), dpi=110)
+    plt.close(fig)
+
+# Fig. 9 companion: mean v_x against time (is the flow steady at the end?).
+hist = {m: os.path.join(out, f"fig9_{m}", "history.csv") for m in ("mirror", "density_preserving")}
+if all(os.path.exists(p) for p in hist.values()):
+    fig, ax = plt.subplots(figsize=(5.8, 4.2))
+    for (m, p), c in zip(hist.items(), ("tab:red", "tab:blue")):
+        a = np.loadtxt(p, delimiter=",", skiprows=1, ndmin=2)
+        ax.plot(a[:, 0], a[:, 1], "o-", color=c, ms=3, label=m)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("mean v_x")
+    ax.set_title("Fig. 9 runs (v0 = 0.5): mean v_x")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fig9_history.png"), dpi=110)
+    plt.close(fig)
 
 p = os.path.join(out, "tmax_mean.csv")
 if os.path.exists(p):
     rows = list(csv.DictReader(open(p)))
     fig, ax = plt.subplots(figsize=(5.8, 4.2))
-    for m, c in (("mirror", "tab:red"), ("density_preserving", "tab:blue")):
+    # Mirror drawn with larger markers under the density-preserving line: equal values overlap.
+    for m, c, st, ms in (("mirror", "tab:red", "o-", 8), ("density_preserving", "tab:blue", "s--", 4),
+                         ("mirror_coarsest", "0.5", "^-", 5)):
         r = sorted([x for x in rows if x["map"] == m], key=lambda x: float(x["v0"]))
-        ax.plot([float(x["v0"]) for x in r], [float(x["tmax_mean"]) for x in r], "o-", color=c,
-                label=m)
+        if not r:
+            continue
+        v0 = [float(x["v0"]) for x in r]
+        n = r[0]["runs"]
+        ax.plot(v0, [float(x["tmax_mean"]) for x in r], st, color=c, ms=ms,
+                label=f"{m}: mean of {n} runs")
+        ax.plot(v0, [float(x["tmax_min"]) for x in r], "v:", color=c, ms=4, label=f"{m}: min")
+    ax.text(0.02, 0.5, "mirror_coarsest: diagnostic, the mirror at its own coarsest dx",
+            transform=ax.transAxes, fontsize=7, va="top")
     ax.set_xlabel("v0")
-    ax.set_ylabel("mean t_max (s)")
+    ax.set_ylabel("t_max (s)")
     ax.set_ylim(0, 10.5)
     ax.set_title("Lattice of cylinders, low resolution (Fig. 10)")
-    ax.legend()
+    ax.legend(fontsize=8, loc="lower left")
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "fig10_tmax.png"), dpi=110)

@@ -2,13 +2,27 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
+#include <vector>
 
 namespace curvsph {
 namespace {
 
+double mean_vx(const Particles<2>& P) {
+  double vx = 0;
+  for (const auto& v : P.v) vx += v.x();
+  return P.size() ? vx / static_cast<double>(P.size()) : 0.0;
+}
+
 class CylinderLatticeAnalysis final : public Analysis<2> {
  public:
+  // Mean x velocity at every output time: the history says whether Fig. 9's run reached a
+  // steady state (the drive relaxes v_x towards v0 on the time scale tau, eq. 36).
+  void observe(double t, const Particles<2>& P) override { history_.push_back({t, mean_vx(P)}); }
+
   bool absorb_instability(double t, const Particles<2>&, const InstabilityError& e) override {
     event_time_ = t;
     event_ = true;
@@ -24,10 +38,19 @@ class CylinderLatticeAnalysis final : public Analysis<2> {
     m["t_max"] = event_ ? event_time_ : t;
     m["penetrations"] = penetrations_;
     m["blowup"] = blowup_ ? 1 : 0;
-    double vx = 0;
-    for (const auto& v : P.v) vx += v.x();
-    m["mean_vx"] = P.size() ? vx / static_cast<double>(P.size()) : 0.0;
+    m["mean_vx"] = mean_vx(P);
+    // Steady-state indicator: relative change of the mean v_x over the last output interval.
+    if (history_.size() >= 2) {
+      const auto& a = history_[history_.size() - 2];
+      const auto& b = history_.back();
+      m["mean_vx_rel_change_last_interval"] =
+          std::abs(b[1] - a[1]) / std::max(std::abs(b[1]), 1e-300);
+      m["mean_vx_last_interval"] = b[0] - a[0];
+    }
     if (out_dir.empty()) return;
+    std::ofstream hist(out_dir / "history.csv");
+    hist << "t,mean_vx\n";
+    for (const auto& row : history_) hist << fmt::format("{:.6g},{:.8g}\n", row[0], row[1]);
     std::ofstream f(out_dir / "velocity.csv");
     f << "x,y,vx,vy\n";
     for (std::size_t i = 0; i < P.size(); ++i)
@@ -39,6 +62,7 @@ class CylinderLatticeAnalysis final : public Analysis<2> {
   bool event_ = false, blowup_ = false;
   double event_time_ = 0;
   long penetrations_ = 0;
+  std::vector<std::array<double, 2>> history_;  // (t, mean v_x) at output times
 };
 
 }  // namespace

@@ -18,6 +18,7 @@ struct StudyContext {
   std::filesystem::path source_dir;  // repository root (cases/, scripts/)
   bool quick = false;                // a reduced run for smoke testing
   int threads = 0;
+  int seeds = 0;  // random initialisations per configuration where a study has them; 0: its default
 };
 
 // One row of the validation summary: a figure, its measured value and its target.

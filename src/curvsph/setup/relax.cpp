@@ -102,15 +102,8 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
     mean /= std::max<Index>(n, 1);
     const Real f = static_cast<Real>(opt.alpha) * h2 / static_cast<Real>(mean);
     parallel_for(n, [&](Index i) {
-      Vec<D> d = -f * grad[i];
-      const Real len = d.norm();
-      if (len > cap) d *= cap / len;
-      x[i] += d;
-      // Keep the particle on the fluid side of every wall, at least `clearance` away.
-      for (std::size_t k = 0; k < walls.size(); ++k) {
-        const WallPoint<D> p = walls[k].closest(x[i].template cast<double>());
-        if (p.distance < clearance) x[i] = (p.foot + clearance * p.normal).template cast<Real>();
-      }
+      pack_move<D>(x[i], -f * grad[i], cap);
+      for (std::size_t k = 0; k < walls.size(); ++k) keep_clear_of<D>(x[i], walls[k], clearance);
       cells.wrap(x[i]);
     });
   }

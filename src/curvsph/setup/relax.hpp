@@ -51,6 +51,21 @@ void node_density(const std::vector<Vec<D>>& at, const std::vector<Vec<D>>& xf,
 // std/mean of v.
 double relative_spread(const std::vector<Real>& v);
 
+// One packing move, shared by both packers: x += d with |d| capped at `cap` (a particle never
+// jumps across the wall in one step), then pushed back to at least `clearance` on the fluid
+// side of `wall`.
+template <int D>
+void pack_move(Vec<D>& x, Vec<D> d, Real cap) {
+  const Real len = d.norm();
+  if (len > cap) d *= cap / len;
+  x += d;
+}
+template <int D>
+void keep_clear_of(Vec<D>& x, const Wall<D>& wall, double clearance) {
+  const WallPoint<D> p = wall.closest(x.template cast<double>());
+  if (p.distance < clearance) x = (p.foot + clearance * p.normal).template cast<Real>();
+}
+
 // Relaxes x in place. `cells` must be configured (support 2h, domain periodicity); it is
 // rebuilt over x. The walls' ghosts use `options.map` with support 2h.
 template <int D>

@@ -76,12 +76,8 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
     res.steps = step;
     if (r < opt.tolerance || step >= opt.max_steps) break;
     parallel_for(n, [&](Index i) {
-      Vec<D> d = -f * R[i];
-      const Real len = d.norm();
-      if (len > cap) d *= cap / len;
-      x[i] += d;
-      const WallPoint<D> p = closure.closest(x[i].template cast<double>());
-      if (p.distance < clearance) x[i] = (p.foot + clearance * p.normal).template cast<Real>();
+      pack_move<D>(x[i], -f * R[i], cap);
+      keep_clear_of<D>(x[i], closure, clearance);
       cells.wrap(x[i]);
     });
   }

@@ -53,6 +53,11 @@ class BoundaryModel {
   virtual void add_accelerations(Particles<D>& P) = 0;
   // Indices of fluid particles found on the wrong side of a wall by the last prepare().
   virtual const std::vector<Index>& penetrated() const = 0;
+  // Seconds, accumulated over every prepare(), spent computing the Shepard factor gamma (a part
+  // of the pre-pass; 0 for models without one). Issue 7 names the geometric Shepard factor's
+  // share of a step, and the rest of the pre-pass (the particle-element pair search) is paid
+  // by every Shepard mode, gamma = 1 included.
+  virtual double shepard_seconds() const { return 0; }
   // How far, in kernel supports, the model reads fluid particles around an owned particle:
   // the MPI halo must reach that far (issue 8). Ghosts of particles behind a convex wall can
   // lie closer to a particle than their source does; wall elements interpolate the wall

@@ -298,6 +298,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   m["seconds_neighbors"] = comm.max(pt.neighbors);
   m["seconds_boundary"] = comm.max(pt.boundary);
   m["seconds_boundary_prepass"] = comm.max(pt.boundary_prepass);
+  m["seconds_shepard"] = comm.max(pt.shepard);
   m["seconds_density"] = comm.max(pt.density);
   m["seconds_forces"] = comm.max(pt.forces);
   m["seconds_integrate"] = comm.max(pt.integrate);

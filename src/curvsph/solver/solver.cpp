@@ -125,7 +125,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
   if (boundary_) {
     Stopwatch sw{times_.boundary};
     Stopwatch sw_prepass{times_.boundary_prepass};
+    const double shepard0 = boundary_->shepard_seconds();
     boundary_->prepare(P_, t_);
+    times_.shepard += boundary_->shepard_seconds() - shepard0;
     // Owned particles only: a halo copy that went through a wall is its owner's report.
     std::vector<Index> through;
     for (const Index i : boundary_->penetrated())

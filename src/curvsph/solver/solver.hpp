@@ -26,6 +26,8 @@ struct PhaseTimes {
   // gamma of boundary integrals); a part of `boundary`, reported on its own because the
   // performance targets name it.
   double boundary_prepass = 0;
+  // The part of boundary_prepass that computes the Shepard factor gamma (boundary integrals).
+  double shepard = 0;
 };
 
 template <int D>

@@ -32,6 +32,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   void add_density_rate(Particles<D>& P) override;
   void add_accelerations(Particles<D>& P) override;
   const std::vector<Index>& penetrated() const override { return penetrated_; }
+  double shepard_seconds() const override { return shepard_seconds_; }
   void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override;
 
   // The Shepard factor of every particle from the last prepare().
@@ -41,6 +42,8 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   const std::vector<Real>& wall_pressure() const { return p_wall_; }
 
  private:
+  // Wall time of the gamma computation in prepare(): thread-seconds over the team size.
+  double shepard_seconds_ = 0;
   void build_elements(const Particles<D>& P);
   // The pair list of prepare() must belong to the particles passed to the wall passes.
   void check_prepared(const Particles<D>& P) const;

@@ -148,6 +148,42 @@ TEST(NodeDensityBand, GhostNearTwoHHasFullSupportOnlyInAnalysisBand) {
   EXPECT_NEAR(n_2h / n0, 1.0, 0.05);
 }
 
+// Every particle mirrored around a small convex obstacle: the density-preserving map has no
+// root for sources deeper than R (sqrt 2 - 1) (G(z) = z - z^2/(2R) peaks at R/2 = -G(-d)), the
+// mirror map none beyond d = R (the centre). Those sources get no ghost and are listed,
+// nothing throws: the set-up refusal is for the solver's 2h band only.
+TEST(NodeDensityBand, SourcesWithoutRootAreCountedNotRefused) {
+  constexpr double R = 0.2, dx = 0.02;
+  const WallSet<2> walls = parse_walls<2>(
+      YAML::Load("[{shape: circle, center: [0, 0], radius: 0.2, fluid: outside}]"), "w.yaml", ".");
+  std::vector<Vec<2>> x;
+  for (int i = -25; i < 25; ++i)
+    for (int j = -25; j < 25; ++j) {
+      const double px = (i + 0.5) * dx, py = (j + 0.5) * dx;
+      if (std::hypot(px, py) > R + 0.25 * dx)
+        x.emplace_back(Vec<2>(static_cast<Real>(px), static_cast<Real>(py)));
+    }
+  const WendlandC2<2> W(static_cast<Real>(1.5 * dx));
+  CellList<2> cells;
+  cells.configure(W.support, Vec3d(-0.5, -0.5, 0), Vec3d(0.5, 0.5, 0), {true, true, false});
+  cells.build(x);
+  const double band = node_density_source_band(YAML::Load("{}"), "c.yaml");
+  for (const auto map : {GhostMapKind::density_preserving, GhostMapKind::mirror}) {
+    const double dmax = map == GhostMapKind::mirror ? R : R * (std::sqrt(2.0) - 1.0);
+    std::size_t deep = 0;
+    for (const auto& p : x) {
+      const double d = std::hypot(double(p.x()), double(p.y())) - R;
+      ASSERT_GT(std::abs(d - dmax), 1e-6);  // no lattice point on the threshold
+      deep += d > dmax;
+    }
+    GhostNodeDensity<2> nd;
+    ASSERT_NO_THROW(ghost_node_density<2>(x, cells, walls, map, band, W, nd));
+    EXPECT_GT(deep, 0u);
+    EXPECT_EQ(nd.ghosts.no_root.size(), deep) << to_string(map);
+    EXPECT_EQ(nd.ghosts.size() + deep, x.size()) << to_string(map);
+  }
+}
+
 // The analysis of a case mirrors every fluid particle by default and reports the solver's
 // band separately (small 2-D disk, no relaxation: the counts do not depend on it).
 TEST(NodeDensityBand, AnalysisReportsBothBands) {

@@ -113,7 +113,8 @@ def predict(dx, sd, nth=90, nz=40):
 
 def measured(path, h, sd, png=None):
     plot = {}
-    rows = [r for r in csv.DictReader(open(path)) if r["kind"] == "ghost"]
+    rows = [r for r in csv.DictReader(open(path))
+            if r["kind"] == "ghost" and r.get("band", "all") == "all"]
     for mp in ["mirror", "density_preserving"]:
         by_th, by_z, allv = {}, {}, []
         for r in rows:

@@ -1,6 +1,8 @@
 """Plots of `curvsph validate node_density` (Vela Vela Figs. 6-8): node density n/n_ref of
 fluid particles and ghosts against the signed distance to the wall (negative behind it),
-mirror and density-preserving maps, one PNG per shape."""
+mirror and density-preserving maps, one PNG per shape. Points and solid lines: the analysis
+band (every fluid particle mirrored, as in the paper); dashed lines: the solver's band (only
+fluid within 2h mirrored), when the CSV has it."""
 import csv
 import os
 import sys
@@ -17,8 +19,11 @@ for shape in ("cylinder", "sphere", "torus"):
     binned = os.path.join(out, shape, "node_density_binned.csv")
     if not os.path.exists(pts):
         continue
-    rows = list(csv.DictReader(open(pts)))
-    brows = list(csv.DictReader(open(binned)))
+    # Files written before the band column existed hold the analysis band only.
+    rows = [r for r in csv.DictReader(open(pts)) if r.get("band", "all") == "all"]
+    brows_all = list(csv.DictReader(open(binned)))
+    brows = [r for r in brows_all if r.get("band", "all") == "all"]
+    sbrows = [r for r in brows_all if r.get("band") == "solver"]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     for ax, zoom in zip(axes, (False, True)):
         for m in ("mirror", "density_preserving"):
@@ -32,7 +37,13 @@ for shape in ("cylinder", "sphere", "torus"):
             b = [r for r in brows if r["map"] == m]
             b.sort(key=lambda r: float(r["distance"]))
             ax.plot([float(r["distance"]) for r in b], [float(r["mean"]) for r in b],
-                    color=colors[m], lw=1.2, label=f"binned mean ({m})")
+                    color=colors[m], lw=1.2, label=f"binned mean ({m}, every particle mirrored)")
+            sb = [r for r in sbrows if r["map"] == m]
+            sb.sort(key=lambda r: float(r["distance"]))
+            if sb:
+                ax.plot([float(r["distance"]) for r in sb], [float(r["mean"]) for r in sb],
+                        color=colors[m], lw=1.0, ls="--",
+                        label=f"binned mean ({m}, solver band: fluid within 2h mirrored)")
         ax.axvline(0, color="k", lw=0.8)
         ax.axhline(1, color="k", lw=0.6, ls=":")
         ax.set_xlabel("signed distance to the wall (< 0: behind it, ghosts)")

@@ -98,28 +98,30 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
 }
 
 // Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
-// is the renormalised gradient, or nullptr when delta = 0. `pf` is the caller's reusable
-// scratch (its volumes are filled here); `owned`: the particles computed (computed_count;
-// -1: all).
+// is the renormalised gradient, or nullptr when delta = 0. Per pair, with f = f_ij
+// (grad_i W_ij = f r_ij):
+//   d = f (u_i - u_j).r_ij: under i <-> j, f (u_j - u_i).r_ji = d (symmetric);
+//   q = f psi_ij.r_ij = f [-2 (rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ij]:
+//       under i <-> j, f [-2 (rho_i - rho_j) - (<grad rho>_j + <grad rho>_i).r_ji] = -q;
+//   drho_i += V_j (rho_i d + delta h c0 q),  drho_j += V_i (rho_j d - delta h c0 q).
+// `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
+// computed (computed_count; -1: all).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                      Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
                      Index owned = -1) {
+  const Index n = computed_count(P, owned);
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    Real div = 0, diff = 0;
-    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
-      const Real Vj = V[j];
-      div += Vj * f * (P.v[i] - P.v[j]).dot(r);
-      if (grad_rho) {
-        const Vec<D> psi = -2 * (P.rho[j] - P.rho[i]) * r / r2 - ((*grad_rho)[i] + (*grad_rho)[j]);
-        diff += Vj * f * psi.dot(r);
-      }
-    });
-    P.drho[i] = P.rho[i] * div + delta_h_c0 * diff;
+  const Vec<D>* G = grad_rho ? grad_rho->data() : nullptr;
+  parallel_for(n, [&](Index i) { P.drho[i] = 0; });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (i >= n && j >= n) return;
+    const Real f = W.gradient_factor(std::sqrt(r2));
+    const Real d = f * (P.v[i] - P.v[j]).dot(r);
+    const Real q = G ? delta_h_c0 * f * (-2 * (P.rho[j] - P.rho[i]) - (G[i] + G[j]).dot(r)) : 0;
+    if (i < n) P.drho[i] += V[j] * (P.rho[i] * d + q);
+    if (j < n) P.drho[j] += V[i] * (P.rho[j] * d - q);
   });
 }
 

@@ -136,17 +136,6 @@ class CellList {
     });
   }
 
-  // As above, with the positions the list was built from (its own copy in cell order): for
-  // passes that run between build() and the next move of the particles. Same pairs, same
-  // order, same r and r2 bit for bit as for_each_neighbor(x, x_at_build, f).
-  template <class F>
-  void for_each_neighbor(const Vec<D>& x, F&& f) const {
-    for_each_row(x, [&](Index begin, Index end, const Vec<D>& shift) {
-      scan_sorted(x, begin, end, shift,
-                  [&](Index s, const Vec<D>& r, Real r2) { f(sorted_[s], r, r2); });
-    });
-  }
-
   // Calls f(i, j, r_ij = x_i - x_j (periodic image applied), r2) once for every unordered
   // pair i != j of the indexed points with |r_ij| < support, on the positions of the last
   // build(). Which of the two is `i` is an implementation detail; callers add the pair's

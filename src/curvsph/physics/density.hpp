@@ -6,9 +6,15 @@
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
 // where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j -
 // x_i)]^-1, exact for linear fields).
-// Every pass here reads neighbours through the cell list's own sorted copy of the positions
-// (CellList::for_each_neighbor without a position array): `cells` must have been built from
-// P.x as it is now, which the solver guarantees (build_neighbors() right before the passes).
+//
+// Every pass here is symmetric: CellList::for_each_pair visits each pair once and its term is
+// added to both particles, with the sign each term takes under i <-> j (r_ji = -r_ij,
+// grad_j W_ji = -grad_i W_ij) written at the term. Neighbours come from the cell list's sorted
+// copy of the positions: `cells` must have been built from P.x as it is now, which the solver
+// guarantees (build_neighbors() right before the passes).
+// [mpi] Particles [0, n) with n = computed_count(P, owned) are computed; halo copies (>= n)
+// are neighbours only: a pair (owned, halo) adds to the owned one, a pair of two halo copies
+// is skipped (each rank computes the pairs its owned particles take part in).
 #include <Eigen/LU>
 #include <array>
 #include <cmath>
@@ -22,17 +28,21 @@
 
 namespace curvsph {
 
+// sigma_i = W(0) + sum_{j != i} W_ij: the pair term W_ij is the same for i and j.
 // `owned`: the particles computed (computed_count; -1: all).
 template <int D>
 void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                        Index owned = -1) {
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    Real s = 0;
-    cells.for_each_neighbor(P.x[i],
-                            [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
-    P.sigma[i] = s;
-    P.rho[i] = P.mass[i] * s;
+  const Index n = computed_count(P, owned);
+  const Real w0 = W.value(0);  // the particle itself
+  parallel_for(n, [&](Index i) { P.sigma[i] = w0; });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>&, Real r2) {
+    if (i >= n && j >= n) return;
+    const Real w = W.value(std::sqrt(r2));
+    if (i < n) P.sigma[i] += w;
+    if (j < n) P.sigma[j] += w;
   });
+  parallel_for(n, [&](Index i) { P.rho[i] = P.mass[i] * P.sigma[i]; });
 }
 
 // The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho:

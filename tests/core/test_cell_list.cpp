@@ -37,18 +37,6 @@ void check_against_brute_force(std::array<bool, 3> periodic, unsigned seed, Real
         if (periodic[d]) s[d] -= (hi[d] - lo[d]) * std::round(s[d] / (hi[d] - lo[d]));
       if (s.norm() < support) brute.push_back(static_cast<Index>(j));
     }
-    // The overload on the list's own sorted copy of the positions must hand out the same
-    // pairs in the same order with bit-identical r and r2 (the physics passes rely on it).
-    std::size_t k = 0;
-    cells.for_each_neighbor(x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      ASSERT_LT(k, found.size());
-      EXPECT_EQ(j, found[k]);
-      const Vec<D> s = cells.separation(x[i], x[j]);
-      EXPECT_NEAR((r - s).norm(), 0.0, 1e-12);
-      EXPECT_EQ(r2, r.squaredNorm());
-      ++k;
-    });
-    EXPECT_EQ(k, found.size());
     std::sort(found.begin(), found.end());
     ASSERT_EQ(found, brute) << "particle " << i;
     pairs += static_cast<long>(found.size());
@@ -79,6 +67,109 @@ TEST(CellList, MatchesBruteForceOnShortPeriodicAxes2D) {
 }
 TEST(CellList, MatchesBruteForceOnShortPeriodicAxes3D) {
   check_against_brute_force<3>({true, true, true}, 7, 0.3);
+}
+
+// The symmetric visitor for_each_pair against brute force: every pair within the support
+// exactly once (i != j), with the minimal-image r_ij = x_i - x_j; and its slab colouring: two
+// slabs of one colour never touch the same particle (they run at the same time).
+template <int D>
+void check_pairs_against_brute_force(std::array<bool, 3> periodic, unsigned seed,
+                                     Real support = 0.11, int min_slabs = 3, double len0 = 1) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  const Vec3d lo(-0.3, 0.1, 0.2), hi(-0.3 + len0, 0.8, 1.1);
+  std::vector<Vec<D>> x(3000);
+  for (auto& p : x)
+    for (int d = 0; d < D; ++d) p[d] = lo[d] + (hi[d] - lo[d]) * U(rng);
+  CellList<D> cells;
+  cells.configure(support, lo, hi, periodic);
+  cells.build(x);
+  const Index n = static_cast<Index>(x.size());
+  std::vector<std::pair<Index, Index>> found;
+  std::array<std::vector<int>, 2> toucher;  // per colour, the slab that touched a particle
+  toucher[0].assign(n, -1);
+  toucher[1].assign(n, -1);
+  int conflicts = 0;
+  ASSERT_GE(cells.slab_count(), min_slabs);  // else the colouring is not exercised
+  for (int k = 0; k < cells.slab_count(); ++k) {
+    auto f = [&](Index i, Index j, const Vec<D>& r, Real r2) {
+      found.emplace_back(std::min(i, j), std::max(i, j));
+      EXPECT_NE(i, j);
+      const Vec<D> s = cells.separation(x[i], x[j]);
+      EXPECT_NEAR((r - s).norm(), 0.0, 1e-12);
+      EXPECT_EQ(r2, r.squaredNorm());
+      for (const Index p : {i, j}) {
+        int& t = toucher[k % 2][p];
+        if (t != -1 && t != k) ++conflicts;
+        t = k;
+      }
+    };
+    cells.for_each_pair_in_slab(k, f);
+  }
+  EXPECT_EQ(conflicts, 0);
+  std::vector<std::pair<Index, Index>> brute;
+  std::vector<int> brute_count(n, 0);
+  for (Index i = 0; i < n; ++i)
+    for (Index j = i + 1; j < n; ++j) {
+      Vec<D> s = x[i] - x[j];
+      for (int d = 0; d < D; ++d)
+        if (periodic[d]) s[d] -= (hi[d] - lo[d]) * std::round(s[d] / (hi[d] - lo[d]));
+      if (s.norm() < support) {
+        brute.emplace_back(i, j);
+        ++brute_count[i];
+        ++brute_count[j];
+      }
+    }
+  std::sort(found.begin(), found.end());
+  ASSERT_EQ(found, brute);            // each pair once: a duplicate or a miss breaks the equality
+  EXPECT_GT(brute.size(), x.size());  // real neighbourhoods
+  // The threaded driver: per-particle counts written from both ends of each pair, as the
+  // physics passes do; a race between two threads would lose increments.
+  std::vector<int> count(n, 0);
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>&, Real) {
+    ++count[i];
+    ++count[j];
+  });
+  EXPECT_EQ(count, brute_count);
+}
+
+TEST(CellList, PairsMatchBruteForce2DPeriodic) {
+  check_pairs_against_brute_force<2>({true, true, false}, 11);
+}
+TEST(CellList, PairsMatchBruteForce2DMixed) {
+  check_pairs_against_brute_force<2>({false, true, false}, 12);
+}
+TEST(CellList, PairsMatchBruteForce2DOpen) {
+  check_pairs_against_brute_force<2>({false, false, false}, 13);
+}
+TEST(CellList, PairsMatchBruteForce3DPeriodic) {
+  check_pairs_against_brute_force<3>({true, true, true}, 14);
+}
+TEST(CellList, PairsMatchBruteForce3DMixed) {
+  check_pairs_against_brute_force<3>({true, false, true}, 15);
+}
+TEST(CellList, PairsMatchBruteForce3DOpen) {
+  check_pairs_against_brute_force<3>({false, false, false}, 16);
+}
+// A box three times longer along axis 0: the slabs are cut along axis 0, which the half
+// stencil walks both ways (slabs 2 reach thick).
+TEST(CellList, PairsMatchBruteForce2DSlabsAlongAxis0) {
+  check_pairs_against_brute_force<2>({true, false, false}, 20, 0.11, 10, 3.0);
+}
+TEST(CellList, PairsMatchBruteForce3DSlabsAlongAxis0) {
+  check_pairs_against_brute_force<3>({false, true, true}, 21, 0.11, 10, 3.0);
+}
+// Short periodic axes (reach 1, whole rows in three images; see above). In 2-D both axes are
+// too short to cut: one slab. In 3-D axis 2 (3 cells) is cut in two.
+TEST(CellList, PairsMatchBruteForceOnShortPeriodicAxes2D) {
+  check_pairs_against_brute_force<2>({true, true, false}, 17, 0.3, 1);
+}
+TEST(CellList, PairsMatchBruteForceOnShortPeriodicAxes3D) {
+  check_pairs_against_brute_force<3>({true, true, true}, 18, 0.3, 2);
+}
+// Only axis 1 is short (reach 1, three images): the slabs are cut along axis 2.
+TEST(CellList, PairsMatchBruteForceOnOneShortPeriodicAxis3D) {
+  check_pairs_against_brute_force<3>({false, true, false}, 19, 0.3, 3);
 }
 
 TEST(CellList, WrapKeepsPointsInTheBox) {

@@ -11,6 +11,11 @@
 // across candidates), the hits are compacted into a small index buffer by a branch-free
 // store, and only the hits reach the caller. With ~85 % of the candidates outside the
 // support (docs/performance.md), the per-candidate branch of a plain scan mispredicts often.
+//
+// for_each_pair() visits every pair within the support once, for the symmetric passes (the
+// caller adds a pair's contribution to both particles: half the distance tests and kernel
+// evaluations of a gather over for_each_neighbor). Threads take slabs of cells in two colours
+// so that no two threads ever write the same particle (plan_slabs()).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -108,6 +113,7 @@ class CellList {
       sx_[d].resize(n);
       for (Index s = 0; s < n; ++s) sx_[d][s] = x[sorted_[s]][d];
     }
+    plan_slabs();
   }
 
   // Calls f(j, r_ij = x - x_j (periodic image applied), r2) for every indexed point j with
@@ -130,48 +136,74 @@ class CellList {
     });
   }
 
-  // As above, with the positions the list was built from (its own copy in cell order): for
-  // passes that run between build() and the next move of the particles. Same pairs, same
-  // order, same r and r2 bit for bit as for_each_neighbor(x, x_at_build, f).
+  // Calls f(i, j, r_ij = x_i - x_j (periodic image applied), r2) once for every unordered
+  // pair i != j of the indexed points with |r_ij| < support, on the positions of the last
+  // build(). Which of the two is `i` is an implementation detail; callers add the pair's
+  // contribution to both (or to the one they own). Runs threaded: f may write to particles
+  // i and j, and to nothing else shared. The visiting order (hence every per-particle sum)
+  // is fixed by the cell grid alone, the same for any thread count.
   template <class F>
-  void for_each_neighbor(const Vec<D>& x, F&& f) const {
-    for_each_row(x, [&](Index begin, Index end, const Vec<D>& shift) {
-      for (Index b = begin; b < end; b += kBlock) {
-        const int m = static_cast<int>(std::min<Index>(kBlock, end - b));
-        // Squared distances of the block, one lane per candidate (no branch, vectorisable).
-        // The test is a filter with a relative margin; the exact test below decides.
-        alignas(64) Real r2b[kBlock];
-        for (int k = 0; k < m; ++k) {
-          Real q = 0;
-          for (int d = 0; d < D; ++d) {
-            const Real rd = x[d] - (sx_[d][b + k] + shift[d]);
-            q += rd * rd;
+  void for_each_pair(F&& f) const {
+    const int n = slab_count();
+    for (int colour = 0; colour < 2; ++colour) {
+      // Slabs of one colour write disjoint particle sets (plan_slabs()); their order among
+      // themselves does not change any particle's sum, so a dynamic schedule is safe.
+#pragma omp parallel for schedule(dynamic, 1)
+      for (int k = colour; k < n; k += 2) for_each_pair_in_slab(k, f);
+    }
+  }
+
+  // The slabs of for_each_pair (exposed for the tests of its colouring). Slab k visits, for
+  // every particle i in its cells (cell order, then sorted order), the pairs (i, j) with j
+  // "after" i: j's cell offset from i's, o = (o_0, .., o_{D-1}) counted in unwrapped cells
+  // (periodic image included), is lexicographically positive with axis D-1 most significant,
+  // or o = 0 and j comes later in the sorted order. Seen from j the offset is -o, so every
+  // pair is visited from exactly one side.
+  int slab_count() const {
+    return static_cast<int>(slab_begin_.size()) - 1;
+  }
+  template <class F>
+  void for_each_pair_in_slab(int slab, F& f) const {
+    const int a = slab_axis_;
+    std::array<int, D> lo{}, hi{};
+    for (int d = 0; d < D; ++d) hi[d] = count_[d];
+    lo[a] = slab_begin_[slab];
+    hi[a] = slab_begin_[slab + 1];
+    if (lo[a] >= hi[a]) return;
+    std::array<int, D> c = lo;
+    std::array<Range, kMaxRanges> ranges;
+    while (true) {
+      const Index cell = linear(c);
+      if (start_[cell] < start_[cell + 1]) {
+        const int nr = half_ranges(c, ranges);
+        for (Index s = start_[cell]; s < start_[cell + 1]; ++s) {
+          const Index i = sorted_[s];
+          Vec<D> x;
+          for (int d = 0; d < D; ++d) x[d] = sx_[d][s];
+          for (int k = 0; k < nr; ++k) {
+            const Range& g = ranges[k];
+            // The own cell's range starts right after i: same-cell pairs once.
+            scan_sorted(x, g.own ? s + 1 : g.begin, g.end, g.shift,
+                        [&](Index sj, const Vec<D>& r, Real r2) { f(i, sorted_[sj], r, r2); });
           }
-          r2b[k] = q;
-        }
-        int hits[kBlock];
-        int nh = 0;
-        const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
-        for (int k = 0; k < m; ++k) {
-          hits[nh] = k;
-          nh += r2b[k] < filter2;
-        }
-        for (int h = 0; h < nh; ++h) {
-          const Index s = b + hits[h];
-          Vec<D> p;
-          for (int d = 0; d < D; ++d) p[d] = sx_[d][s];
-          // The exact expression of the pos-array overload, so decisions and values agree.
-          const Vec<D> r = x - (p + shift);
-          const Real r2 = r.squaredNorm();
-          if (r2 < support2_) f(sorted_[s], r, r2);
         }
       }
-    });
+      int d = 0;
+      while (d < D && ++c[d] == hi[d]) {
+        c[d] = lo[d];
+        ++d;
+      }
+      if (d == D) break;
+    }
   }
 
   // Particle indices in cell order: the permutation that makes cells contiguous in memory.
-  const std::vector<Index>& sorted() const { return sorted_; }
-  Index cell_count() const { return static_cast<Index>(start_.size()) - 1; }
+  const std::vector<Index>& sorted() const {
+    return sorted_;
+  }
+  Index cell_count() const {
+    return static_cast<Index>(start_.size()) - 1;
+  }
   // Bytes held by the index arrays and the sorted positions (memory-per-particle accounting
   // of the throughput study).
   std::size_t bytes() const {
@@ -188,6 +220,181 @@ class CellList {
   // Cells visited along one axis: 2 kMaxReach + 1 in a stencil, or 3 images of at most 2
   // cells where a periodic axis is shorter than 3 supports.
   static constexpr int kMaxAxisVisits = 2 * kMaxReach + 2;
+
+  // Ranges of one cell's half stencil: at most kMaxAxisVisits^(D-1) rows of up to 3 ranges.
+  static constexpr int kMaxRanges =
+      3 * (D == 3 ? kMaxAxisVisits * kMaxAxisVisits : (D == 2 ? kMaxAxisVisits : 1));
+  struct Range {
+    Index begin = 0, end = 0;
+    Vec<D> shift = Vec<D>::Zero();
+    bool own = false;  // the range that starts at the visiting particle's own cell
+  };
+
+  // Calls g(s, r, r2) for every sorted position s in [begin, end) whose point, shifted by
+  // `shift`, lies within the support of x (r = x - point - shift). The candidate test is a
+  // block filter on the sorted copy of the positions: squared distances of a block in one
+  // branch-free (vectorisable) loop, hits compacted by a branch-free store, an exact test on
+  // the hits.
+  template <class G>
+  void scan_sorted(const Vec<D>& x, Index begin, Index end, const Vec<D>& shift, G&& g) const {
+    for (Index b = begin; b < end; b += kBlock) {
+      const int m = static_cast<int>(std::min<Index>(kBlock, end - b));
+      // The test is a filter with a relative margin; the exact test below decides.
+      alignas(64) Real r2b[kBlock];
+      for (int k = 0; k < m; ++k) {
+        Real q = 0;
+        for (int d = 0; d < D; ++d) {
+          const Real rd = x[d] - (sx_[d][b + k] + shift[d]);
+          q += rd * rd;
+        }
+        r2b[k] = q;
+      }
+      int hits[kBlock];
+      int nh = 0;
+      const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
+      for (int k = 0; k < m; ++k) {
+        hits[nh] = k;
+        nh += r2b[k] < filter2;
+      }
+      for (int h = 0; h < nh; ++h) {
+        const Index s = b + hits[h];
+        Vec<D> p;
+        for (int d = 0; d < D; ++d) p[d] = sx_[d][s];
+        // The expression of for_each_neighbor(x, pos, f), so decisions and values agree.
+        const Vec<D> r = x - (p + shift);
+        const Real r2 = r.squaredNorm();
+        if (r2 < support2_) g(s, r, r2);
+      }
+    }
+  }
+
+  // Slabs of for_each_pair along the axis that gives the most of them. A pair's two cells
+  // differ by at most reach_ cells along any axis that has a stencil, and along axis D-1 (the
+  // most significant of the half-stencil order) j is never before i: a slab of cells
+  // [b, e) writes particles in [b - reach_, e + reach_) (axis D-1: [b, e + reach_)). Slabs at
+  // least 2 reach_ cells thick (reach_ on axis D-1) therefore write disjoint particle sets
+  // when every other one runs at once. A periodic axis needs an even slab count (the last
+  // slab touches the first one); a periodic axis short enough to be scanned in three images
+  // cannot be cut. With fewer than two slabs everything is one slab (serial).
+  void plan_slabs() {
+    int axis = 0, slabs = 1, thick = count_[0];
+    for (int a = 0; a < D; ++a) {
+      if (periodic_[a] && count_[a] < 2 * reach_ + 1) continue;
+      const int t = a == D - 1 ? reach_ : 2 * reach_;
+      int n = count_[a] / t;
+      if (periodic_[a] && n % 2) --n;
+      if (n > slabs) {
+        axis = a;
+        slabs = n;
+        thick = t;
+      }
+    }
+    slab_axis_ = axis;
+    slab_begin_.resize(slabs + 1);
+    for (int k = 0; k < slabs; ++k) slab_begin_[k] = k * thick;
+    slab_begin_[slabs] = count_[axis];  // the last slab takes the remainder
+  }
+
+  // The ranges of cell c's half stencil (for_each_pair_in_slab), into `out`; returns their
+  // count. Rows along axis 0 as in for_each_row; a row whose offset (o_{D-1}, .., o_1) is
+  // positive is scanned whole, the own row (offset 0) from c's own cell on (o_0 >= 0), a
+  // negative one not at all.
+  int half_ranges(const std::array<int, D>& c, std::array<Range, kMaxRanges>& out) const {
+    int nr = 0;
+    auto add = [&](Index begin, Index end, const Vec<D>& shift, bool own) {
+      if (begin >= end && !own) return;
+      out[nr].begin = begin;
+      out[nr].end = end;
+      out[nr].shift = shift;
+      out[nr].own = own;
+      ++nr;
+    };
+    std::array<std::array<int, kMaxAxisVisits>, D> cell{}, rel{};
+    std::array<std::array<Real, kMaxAxisVisits>, D> offset{};
+    std::array<int, D> visits{};
+    for (int d = 1; d < D; ++d) {
+      int n = 0;
+      if (periodic_[d] && count_[d] < 2 * reach_ + 1) {
+        for (int s = -1; s <= 1; ++s)
+          for (int k = 0; k < count_[d]; ++k) {
+            cell[d][n] = k;
+            rel[d][n] = k + s * count_[d] - c[d];  // unwrapped offset: -o seen from the other
+            offset[d][n++] = static_cast<Real>(s) * length_[d];
+          }
+      } else {
+        for (int off = -reach_; off <= reach_; ++off) {
+          int k = c[d] + off;
+          Real sh = 0;
+          if (periodic_[d]) {
+            if (k < 0) {
+              k += count_[d];
+              sh = -length_[d];
+            } else if (k >= count_[d]) {
+              k -= count_[d];
+              sh = length_[d];
+            }
+          } else if (k < 0 || k >= count_[d]) {
+            continue;
+          }
+          cell[d][n] = k;
+          rel[d][n] = off;
+          offset[d][n++] = sh;
+        }
+      }
+      visits[d] = n;
+    }
+    std::array<int, D> at{};
+    while (true) {
+      int sign = 0;  // lexicographic sign of (o_{D-1}, .., o_1)
+      for (int d = D - 1; d >= 1 && sign == 0; --d)
+        sign = (rel[d][at[d]] > 0) - (rel[d][at[d]] < 0);
+      if (sign >= 0) {
+        Vec<D> shift = Vec<D>::Zero();
+        Index row = 0;
+        for (int d = D - 1; d >= 1; --d) {
+          row = row * count_[d] + cell[d][at[d]];
+          shift[d] = offset[d][at[d]];
+        }
+        const Index base = row * count_[0];
+        if (sign > 0) {
+          auto scan = [&](Index b, Index e, const Vec<D>& sh) { add(b, e, sh, false); };
+          visit_row(c[0], base, shift, scan);
+        } else {
+          own_row(c[0], base, shift, add);
+        }
+      }
+      int d = 1;
+      while (d < D && ++at[d] == visits[d]) at[d++] = 0;
+      if (d == D) break;
+    }
+    return nr;
+  }
+
+  // The own row of the half stencil: cells with o_0 >= 0 (c0 itself flagged `own`: the scan
+  // starts after the visiting particle). shift is zero on the other axes here.
+  template <class A>
+  void own_row(int c0, Index base, Vec<D> shift, A& add) const {
+    const int n0 = count_[0];
+    const int r = reach_;
+    const Index first = start_[base + c0];
+    if (!periodic_[0]) {
+      add(first, start_[base + std::min(c0 + r, n0 - 1) + 1], shift, true);
+      return;
+    }
+    if (n0 < 2 * r + 1) {  // three images: o_0 = k + s n0 - c0 > 0 for s = 1, < 0 for s = -1
+      add(first, start_[base + n0], shift, true);
+      shift[0] = length_[0];
+      add(start_[base], start_[base + n0], shift, false);
+      return;
+    }
+    if (c0 + r >= n0) {  // the cells beyond the end are the first ones, one period right
+      add(first, start_[base + n0], shift, true);
+      shift[0] = length_[0];
+      add(start_[base], start_[base + c0 + r + 1 - n0], shift, false);
+    } else {
+      add(first, start_[base + c0 + r + 1], shift, true);
+    }
+  }
 
   // Calls scan(begin, end, shift) for every contiguous range of sorted_ that holds the cells
   // within reach_ of x's cell, shift being the periodic image offset of that range.
@@ -299,6 +506,8 @@ class CellList {
   std::array<int, D> count_{};
   std::vector<Index> cell_of_, start_, fill_, sorted_;
   std::array<std::vector<Real>, D> sx_;  // positions at build(), in cell order, per axis
+  int slab_axis_ = 0;                    // plan_slabs()
+  std::vector<int> slab_begin_{0, 0};    // first cell (along slab_axis_) of each slab, + end
 };
 
 }  // namespace curvsph

@@ -6,10 +6,18 @@
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
 // where <grad rho>^L is the renormalised gradient (L_i = [sum_j V_j grad_i W_ij (x) (x_j -
 // x_i)]^-1, exact for linear fields).
-// Every pass here reads neighbours through the cell list's own sorted copy of the positions
-// (CellList::for_each_neighbor without a position array): `cells` must have been built from
-// P.x as it is now, which the solver guarantees (build_neighbors() right before the passes).
+//
+// Every pass here is symmetric: CellList::for_each_pair visits each pair once and its term is
+// added to both particles, with the sign each term takes under i <-> j (r_ji = -r_ij,
+// grad_j W_ji = -grad_i W_ij) written at the term. Neighbours come from the cell list's sorted
+// copy of the positions: `cells` must have been built from P.x as it is now, which the solver
+// guarantees (build_neighbors() right before the passes).
+// [mpi] Particles [0, n) with n = computed_count(P, owned) are computed; halo copies (>= n)
+// are neighbours only: a pair (owned, halo) adds to the owned one, a pair of two halo copies
+// is skipped (each rank computes the pairs its owned particles take part in).
 #include <Eigen/LU>
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "curvsph/core/parallel.hpp"
@@ -20,42 +28,75 @@
 
 namespace curvsph {
 
+// sigma_i = W(0) + sum_{j != i} W_ij: the pair term W_ij is the same for i and j.
 // `owned`: the particles computed (computed_count; -1: all).
 template <int D>
 void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                        Index owned = -1) {
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    Real s = 0;
-    cells.for_each_neighbor(P.x[i],
-                            [&](Index, const Vec<D>&, Real r2) { s += W.value(std::sqrt(r2)); });
-    P.sigma[i] = s;
-    P.rho[i] = P.mass[i] * s;
+  const Index n = computed_count(P, owned);
+  const Real w0 = W.value(0);  // the particle itself
+  parallel_for(n, [&](Index i) { P.sigma[i] = w0; });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>&, Real r2) {
+    if (i >= n && j >= n) return;
+    const Real w = W.value(std::sqrt(r2));
+    if (i < n) P.sigma[i] += w;
+    if (j < n) P.sigma[j] += w;
   });
+  parallel_for(n, [&](Index i) { P.rho[i] = P.mass[i] * P.sigma[i]; });
 }
 
-// The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho.
+// The renormalised density gradient <grad rho>^L_i of Antuono et al. (2012), into grad_rho:
+//   <grad rho>^L_i = L_i g_i, g_i = sum_j V_j (rho_j - rho_i) grad_i W_ij,
+//   L_i^-1 = M_i = sum_j V_j grad_i W_ij (x) (x_j - x_i) = -sum_j V_j f_ij r_ij r_ij^T
+// (grad_i W_ij = f_ij r_ij, r_ij = x_i - x_j). Under i <-> j both pair terms keep their sign:
+// f_ji r_ji r_ji^T = f_ij r_ij r_ij^T, and (rho_i - rho_j) f_ij r_ji = (rho_j - rho_i) f_ij r_ij;
+// only the weight changes (V_j for i, V_i for j). M_i is symmetric: its D(D+1)/2 upper
+// entries are accumulated in pf.moment (scratch: 24 bytes a particle in 2-D, 48 in 3-D), g_i
+// in grad_rho itself.
 // `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
 // computed (computed_count; -1: all).
 template <int D>
 void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
                                    const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho,
                                    PairFactors<D>& pf, Index owned = -1) {
+  constexpr int K = D * (D + 1) / 2;
+  const Index n = computed_count(P, owned);
   grad_rho.resize(P.size());
   pf.fill_volume(P);
+  pf.moment.resize(static_cast<std::size_t>(n) * K);
   const Real* V = pf.volume.data();
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    Mat<D> M = Mat<D>::Zero();
-    Vec<D> g = Vec<D>::Zero();
-    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      const Vec<D> gradW = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
+  Real* A = pf.moment.data();  // A_i = sum_j V_j f_ij r_ij r_ij^T = -M_i, upper triangle
+  parallel_for(n, [&](Index i) {
+    grad_rho[i] = Vec<D>::Zero();
+    for (int k = 0; k < K; ++k) A[i * K + k] = 0;
+  });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (i >= n && j >= n) return;
+    const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
+    const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
+    std::array<Real, K> e;                                   // f r r^T, upper triangle
+    int k = 0;
+    for (int a = 0; a < D; ++a)
+      for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
+    if (i < n) {
       const Real Vj = V[j];
-      M.noalias() -= Vj * gradW * r.transpose();  // grad W (x) (x_j - x_i), x_j - x_i = -r
-      g += Vj * (P.rho[j] - P.rho[i]) * gradW;
-    });
+      grad_rho[i] += Vj * g;
+      for (k = 0; k < K; ++k) A[i * K + k] += Vj * e[k];
+    }
+    if (j < n) {
+      const Real Vi = V[i];
+      grad_rho[j] += Vi * g;
+      for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
+    }
+  });
+  parallel_for(n, [&](Index i) {
+    Mat<D> M;
+    int k = 0;
+    for (int a = 0; a < D; ++a)
+      for (int b = a; b < D; ++b, ++k) M(a, b) = M(b, a) = -A[i * K + k];
     // An isolated particle (or a degenerate neighbourhood) keeps the plain gradient.
     const Real det = M.determinant();
-    grad_rho[i] = std::abs(det) > Real(1e-3) ? Vec<D>(M.inverse() * g) : g;
+    if (std::abs(det) > Real(1e-3)) grad_rho[i] = M.inverse() * grad_rho[i];
   });
 }
 
@@ -67,28 +108,30 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
 }
 
 // Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
-// is the renormalised gradient, or nullptr when delta = 0. `pf` is the caller's reusable
-// scratch (its volumes are filled here); `owned`: the particles computed (computed_count;
-// -1: all).
+// is the renormalised gradient, or nullptr when delta = 0. Per pair, with f = f_ij
+// (grad_i W_ij = f r_ij):
+//   d = f (u_i - u_j).r_ij: under i <-> j, f (u_j - u_i).r_ji = d (symmetric);
+//   q = f psi_ij.r_ij = f [-2 (rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ij]:
+//       under i <-> j, f [-2 (rho_i - rho_j) - (<grad rho>_j + <grad rho>_i).r_ji] = -q;
+//   drho_i += V_j (rho_i d + delta h c0 q),  drho_j += V_i (rho_j d - delta h c0 q).
+// `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
+// computed (computed_count; -1: all).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                      Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
                      Index owned = -1) {
+  const Index n = computed_count(P, owned);
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    Real div = 0, diff = 0;
-    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
-      const Real Vj = V[j];
-      div += Vj * f * (P.v[i] - P.v[j]).dot(r);
-      if (grad_rho) {
-        const Vec<D> psi = -2 * (P.rho[j] - P.rho[i]) * r / r2 - ((*grad_rho)[i] + (*grad_rho)[j]);
-        diff += Vj * f * psi.dot(r);
-      }
-    });
-    P.drho[i] = P.rho[i] * div + delta_h_c0 * diff;
+  const Vec<D>* G = grad_rho ? grad_rho->data() : nullptr;
+  parallel_for(n, [&](Index i) { P.drho[i] = 0; });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (i >= n && j >= n) return;
+    const Real f = W.gradient_factor(std::sqrt(r2));
+    const Real d = f * (P.v[i] - P.v[j]).dot(r);
+    const Real q = G ? delta_h_c0 * f * (-2 * (P.rho[j] - P.rho[i]) - (G[i] + G[j]).dot(r)) : 0;
+    if (i < n) P.drho[i] += V[j] * (P.rho[i] * d + q);
+    if (j < n) P.drho[j] += V[i] * (P.rho[j] * d - q);
   });
 }
 

@@ -4,9 +4,9 @@
 //   mu lap u_i / rho_i = (1/m_i) sum_j mu_ij (1/sigma_j^2 + 1/sigma_i^2) (u_i - u_j) (1/r) dW/dr
 // with mu_ij = 2 mu_i mu_j / (mu_i + mu_j) between fluids of different viscosity (Hu & Adams
 // 2006: keeps the pair force antisymmetric and the shear stress continuous at interfaces).
-// Gather form: each particle sums over its
-// own neighbours, so threads never write to the same particle. Neighbours come from the cell
-// list's sorted copy of the positions: `cells` must have been built from P.x as it is now.
+// Symmetric form: CellList::for_each_pair visits each pair once, its term goes to both
+// particles (signs at fluid_forces). Neighbours come from the cell list's sorted copy of the
+// positions: `cells` must have been built from P.x as it is now.
 #include <vector>
 
 #include "curvsph/core/parallel.hpp"
@@ -27,34 +27,34 @@ void update_pressure(Particles<D>& P, const FluidParams<D>& F) {
 }
 
 // Pair accelerations (pressure gradient and viscosity) of every particle; body forces are
-// added by body_forces() after the wall terms.
+// added by body_forces() after the wall terms. Per pair, with grad_i W_ij = f r_ij:
+//   X_ij = -(p_j/sigma_j^2 + p_i/sigma_i^2) f r_ij + mu_ij (1/sigma_j^2 + 1/sigma_i^2) f (u_i -
+//   u_j), m_i a_i += X_ij,  m_j a_j += X_ji = -X_ij
+// (r_ji = -r_ij, u_j - u_i = -(u_i - u_j), the bracketed factors and the harmonic mean mu_ij
+// are symmetric): pair forces are equal and opposite, momentum is conserved pair by pair.
 // `pf` is the caller's reusable scratch (filled here); `owned`: the particles computed
-// (computed_count; -1: all).
+// (computed_count; -1: all) — [mpi] a pair with a halo copy adds to the owned particle only,
+// a pair of two halo copies is skipped.
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                   const FluidParams<D>& F, PairFactors<D>& pf, Index owned = -1) {
+  const Index n = computed_count(P, owned);
   pf.fill_forces(P, F);
   const Real* inv_s2 = pf.inv_s2.data();
   const Real* p_s2 = pf.p_s2.data();
   const Real* mu = pf.mu.data();
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    const Real inv_si2 = inv_s2[i];
-    const Real pi_s2 = p_s2[i];
-    const Real mu_i = mu[i];
-    const Vec<D> vi = P.v[i];
-    Vec<D> grad_p = Vec<D>::Zero();
-    Vec<D> visc = Vec<D>::Zero();
-    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      const Real f = W.gradient_factor(std::sqrt(r2));  // grad_i W_ij = r f
-      grad_p += (p_s2[j] + pi_s2) * f * r;
-      const Real mu_j = mu[j];
-      const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
-      visc += mu_ij * (inv_s2[j] + inv_si2) * f * (vi - P.v[j]);
-    });
-    const Real inv_m = 1 / P.mass[i];
-    P.a[i] = -inv_m * grad_p + inv_m * visc;
+  parallel_for(n, [&](Index i) { P.a[i] = Vec<D>::Zero(); });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (i >= n && j >= n) return;
+    const Real f = W.gradient_factor(std::sqrt(r2));
+    const Real mu_i = mu[i], mu_j = mu[j];
+    const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
+    const Vec<D> X =
+        f * (mu_ij * (inv_s2[j] + inv_s2[i]) * (P.v[i] - P.v[j]) - (p_s2[j] + p_s2[i]) * r);
+    if (i < n) P.a[i] += X;
+    if (j < n) P.a[j] -= X;
   });
+  parallel_for(n, [&](Index i) { P.a[i] *= 1 / P.mass[i]; });
 }
 
 // Convenience form with its own scratch (allocates: tests and one-off calls).

@@ -18,6 +18,7 @@ struct PairFactors {
   std::vector<Real> inv_s2;  // 1 / sigma_j^2
   std::vector<Real> p_s2;    // p_j / sigma_j^2
   std::vector<Real> mu;      // dynamic viscosity of j's phase
+  std::vector<Real> moment;  // renormalisation matrix accumulator, D(D+1)/2 per particle
 
   void fill_volume(const Particles<D>& P) {
     volume.resize(P.size());
@@ -37,7 +38,9 @@ struct PairFactors {
   }
 
   std::size_t bytes() const {
-    return (volume.capacity() + inv_s2.capacity() + p_s2.capacity() + mu.capacity()) * sizeof(Real);
+    return (volume.capacity() + inv_s2.capacity() + p_s2.capacity() + mu.capacity() +
+            moment.capacity()) *
+           sizeof(Real);
   }
 };
 

@@ -102,6 +102,29 @@ def main():
     fig.savefig(os.path.join(out, "error_vs_dx.png"), dpi=120)
     plt.close(fig)
 
+    # The split of the error of B into the mean-profile error and the particle scatter.
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for m in MAPS:
+        p = os.path.join(out, "runs", f"rot_{m}_dx{dx}mm", "couette_error.csv")
+        if os.path.exists(p):
+            d = load(p)
+            if "velocity_profile_error" not in d:
+                continue
+            c = STYLE[m][0]
+            ax.plot(d["time"], d["velocity_l2_error"], color=c, ls="-", label=f"{m} total")
+            ax.plot(d["time"], d["velocity_scatter_error"], color=c, ls="--",
+                    label=f"{m} scatter")
+            ax.plot(d["time"], d["velocity_profile_error"], color=c, ls=":",
+                    label=f"{m} mean profile")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel(r"$\varepsilon / \omega R_i$")
+    ax.set_title(f"Error split from the analytic profile, dx = {dx} mm")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "error_split.png"), dpi=120)
+    plt.close(fig)
+
     fig, ax = plt.subplots(figsize=(6, 4))
     exact = None
     for m in MAPS:

@@ -120,6 +120,77 @@ TEST(CouetteRun, VolumeFactorReducesDensityErrorAtT0) {
   EXPECT_LT(beta["velocity_rms"].get<double>(), 1e-12);
 }
 
+// The initial state is the radial balance itself wherever the walls do not reach. The solver's
+// density is rho_i = m_i sigma_i (Barker eq. 8); masses rho V_i / (one mean calibration) left
+// the ring-to-ring spread of sigma_i V_i of the annulus rings in rho: +-0.2 % between rings
+// in the bulk, a pressure error of c0^2 rho0 * 0.002 = 0.13 Pa, larger than the whole
+// centripetal balance across the gap (0.075 Pa). Reference: the analytic pressure p(r_i) of
+// CouetteFlow (eq. 24's balance, integrated by hand) up to the common constant; rho0 at rest.
+// The same with the rings moved by a few packing steps (setup.relax): no ring pattern to
+// continue, each bulk particle's own sigma.
+TEST(CouetteInitial, BulkDensityIsTheRadialBalance) {
+  for (const double omega : {0.0, 1.0})
+    for (const bool relax : {false, true}) {
+      std::vector<std::string> o = {"resolution.dx=1.5e-3", "boundary.map=mirror_beta",
+                                    "walls.0.motion.rotate.omega=" + std::to_string(omega)};
+      if (relax) o.push_back("setup.relax={max_steps: 20, tolerance: 1.0e-9}");
+      const Case c = read_case(kCases / "couette.yaml", o);
+      Solver<2> solver(c);
+      solver.initialize();
+      const auto& P = solver.particles();
+      const CouetteFlow f{0.025, 0.040, omega, 0.0};
+      const double rho0 = 1000, support = 2 * 1.3 * 1.5e-3;
+      std::vector<double> dev, drho;
+      for (std::size_t i = 0; i < P.size(); ++i) {
+        const double r = P.x[i].cast<double>().norm();
+        if (r - 0.025 < support || 0.040 - r < support) continue;
+        dev.push_back(static_cast<double>(P.p[i]) - f.pressure(r, rho0));
+        drho.push_back(static_cast<double>(P.rho[i]) / rho0 - 1);
+      }
+      ASSERT_GT(dev.size(), 300u);
+      const auto [lo, hi] = std::minmax_element(dev.begin(), dev.end());
+      // The same constant for every particle (the mean pressure is p0 by construction); the
+      // ring-to-ring error was +-0.13 Pa.
+      EXPECT_LT(*hi - *lo, 1e-7) << "omega = " << omega << ", relax " << relax;
+      if (omega == 0) {  // at rest: rho0 itself
+        for (double d : drho) EXPECT_LT(std::abs(d), 1e-12) << "relax " << relax;
+      }
+    }
+}
+
+// The split of eq. 25 into the mean-profile error and the scatter around it, against hand
+// values: a common offset is all profile, an alternating one all scatter.
+TEST(CouetteAnalysis, ProfileAndScatterSplit) {
+  const Case c = read_case(kCases / "couette.yaml", {"resolution.dx=1.5e-3"});
+  const CouetteFlow f{0.025, 0.040, 1.0, 0.0};
+  const double d = 1e-3, r = 0.0301;  // r: one radial bin
+  auto figures = [&](bool alternate) {
+    Particles<2> P;
+    P.resize(8);
+    for (std::size_t i = 0; i < 8; ++i) {
+      const double th = 0.7 * static_cast<double>(i);
+      const Vec2d er(std::cos(th), std::sin(th)), et(-er.y(), er.x());
+      const double off = alternate && i % 2 ? -d : d;
+      P.x[i] = (r * er).cast<Real>();
+      P.v[i] = ((f.v_theta(r) + off) * et).cast<Real>();
+      P.rho[i] = 1000;
+      P.phase[i] = 0;
+    }
+    auto a = make_couette_analysis(YAML::Node(), c);
+    a->observe(0, P);
+    nlohmann::json m;
+    a->finish(0, P, m, {});
+    return m;
+  };
+  const auto common = figures(false), alt = figures(true);
+  EXPECT_NEAR(common["velocity_l2_error"].get<double>(), d / 0.025, 1e-9);
+  EXPECT_NEAR(common["velocity_profile_error"].get<double>(), d / 0.025, 1e-9);
+  EXPECT_NEAR(common["velocity_scatter_error"].get<double>(), 0.0, 1e-6);
+  EXPECT_NEAR(alt["velocity_l2_error"].get<double>(), d / 0.025, 1e-9);
+  EXPECT_NEAR(alt["velocity_profile_error"].get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(alt["velocity_scatter_error"].get<double>(), d / 0.025, 1e-9);
+}
+
 TEST(CouetteRun, ShortRotatingRunStaysNearAnalyticProfile) {
   const auto m = run_quiet("couette.yaml", {"resolution.dx=1.875e-3", "time.end=0.3"});
   ASSERT_TRUE(m.contains("velocity_l2_error"));

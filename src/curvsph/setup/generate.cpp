@@ -73,6 +73,30 @@ bool region_contains(const RegionSpec& r, int dim, const Vec3d& x) {
 
 }  // namespace
 
+AnnulusRings annulus_rings(const RegionSpec& r, double dx) {
+  const long count = std::max(1L, std::lround((r.r_out - r.r_in) / dx));
+  return {count, (r.r_out - r.r_in) / count};
+}
+
+void append_annulus_rings(const RegionSpec& r, const AnnulusRings& rings, long k_begin, long k_end,
+                          double dx, std::vector<GeneratedPoint>& out) {
+  // Rings at the cell centres across the gap; each ring holds the integer number of
+  // particles closest to its circumference / dx, so spacing along and across match.
+  for (long k = k_begin; k < k_end; ++k) {
+    const double rad = r.r_in + (k + 0.5) * rings.dr;
+    if (rad <= 0) continue;  // continued inwards past the centre
+    const long m = std::max(3L, std::lround(2 * std::numbers::pi * rad / dx));
+    const double vol = 2 * std::numbers::pi * rad * rings.dr / m;
+    // Alternate rings are rotated half a step so neighbours interleave (parity of k, also
+    // for the rings continued inwards, k < 0).
+    const double phase = (((k % 2) + 2) % 2) * std::numbers::pi / m;
+    for (long q = 0; q < m; ++q) {
+      const double th = phase + 2 * std::numbers::pi * q / m;
+      out.push_back({r.center + Vec3d(rad * std::cos(th), rad * std::sin(th), 0), vol});
+    }
+  }
+}
+
 std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double dx,
                                             const std::string& file, const std::string& key) {
   std::vector<GeneratedPoint> pts;
@@ -100,21 +124,8 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
     }
     case RegionSpec::Kind::annulus: {
       if (dim != 2) throw InputError(file, key, "an annulus region is 2-D");
-      // Rings at the cell centres across the gap; each ring holds the integer number of
-      // particles closest to its circumference / dx, so spacing along and across match.
-      const long rings = std::max(1L, std::lround((r.r_out - r.r_in) / dx));
-      const double dr = (r.r_out - r.r_in) / rings;
-      for (long k = 0; k < rings; ++k) {
-        const double rad = r.r_in + (k + 0.5) * dr;
-        const long m = std::max(3L, std::lround(2 * std::numbers::pi * rad / dx));
-        const double vol = 2 * std::numbers::pi * rad * dr / m;
-        // Alternate rings are rotated half a step so neighbours interleave.
-        const double phase = (k % 2) * std::numbers::pi / m;
-        for (long q = 0; q < m; ++q) {
-          const double th = phase + 2 * std::numbers::pi * q / m;
-          pts.push_back({r.center + Vec3d(rad * std::cos(th), rad * std::sin(th), 0), vol});
-        }
-      }
+      const AnnulusRings rings = annulus_rings(r, dx);
+      append_annulus_rings(r, rings, 0, rings.count, dx, pts);
       break;
     }
     case RegionSpec::Kind::inside_walls:

@@ -19,6 +19,20 @@ struct GeneratedPoint {
 std::vector<GeneratedPoint> generate_region(const RegionSpec& region, int dimension, double dx,
                                             const std::string& file, const std::string& key);
 
+// The concentric rings of an annulus region: `count` rings of pitch dr = (r_out - r_in) / count
+// (count = round((r_out - r_in) / dx)); ring k sits at r_in + (k + 1/2) dr.
+struct AnnulusRings {
+  long count;
+  double dr;
+};
+AnnulusRings annulus_rings(const RegionSpec& annulus, double dx);
+
+// Appends rings k_begin <= k < k_end of the annulus's ring pattern to `out`. Rings 0..count-1
+// are the region's own; k < 0 and k >= count continue the same pattern beyond its edges (the
+// arrangement the fluid would have without walls; couette_initial calibrates masses on it).
+void append_annulus_rings(const RegionSpec& annulus, const AnnulusRings& rings, long k_begin,
+                          long k_end, double dx, std::vector<GeneratedPoint>& out);
+
 // All fluids of the case into P (mass = rho0 * volume, velocity from the fluid spec). Points
 // closer than 0.3·dx to a wall, or on its far side, are dropped, so a region may overlap the
 // walls; `inside_walls` fills the domain box on the fluid side of every wall. Fluids are

@@ -5,11 +5,15 @@
 //  B. rotating inner wall, started from the analytic profile, run to T: the error of eq. 25
 //     (with the square, / omega R_i) against time (Fig. 3b) and against dx (Fig. 4);
 //  C. the coarsest resolution started from rest as Barker did, mirror vs mirror_beta, error
-//     against time over several viscous e-folding times (Fig. 3b as in the paper).
+//     against time over several viscous e-folding times (Fig. 3b as in the paper);
+//  D. diagnosis (issue #4): B's run at the plotted dx with mirror_beta, the background
+//     pressure p0 scaled by 1/4 and 4 (Barker's 2.5 Pa in between), to show what the error of
+//     B is made of. Not a tuning: the figures of B keep Barker's p0.
 // Per-run CSVs stay under runs/ (only the plotted ones); scripts/plot_couette.py draws them.
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -90,7 +94,7 @@ StudyResult run_couette_study(const StudyContext& ctx) {
   auto dx_set = [](double dx) { return fmt::format("resolution.dx={}", dx); };
 
   // A. Hydrostatic density at t = 0 for every map and dx; Fig. 2 run at plot_dx.
-  std::map<std::string, std::vector<double>> rho_t0, l2, l2_abs, secs;
+  std::map<std::string, std::vector<double>> rho_t0, l2, l2_abs, l2_profile, l2_scatter, secs;
   std::vector<long> particles;
   for (double dx : dxs)
     for (const auto& map : maps) {
@@ -119,6 +123,8 @@ StudyResult run_couette_study(const StudyContext& ctx) {
                                       fmt::format("time.end={}", t_run), "output.every=0.1"});
       l2[map].push_back(get(m, "velocity_l2_error"));
       l2_abs[map].push_back(get(m, "velocity_l2_error_abs"));
+      l2_profile[map].push_back(get(m, "velocity_profile_error"));
+      l2_scatter[map].push_back(get(m, "velocity_scatter_error"));
       secs[map].push_back(get(m, "wall_seconds"));
       if (map == maps.front()) particles.push_back(m.value("particles", 0L));
       if (dx != plot_dx) prune(ctx.out_dir / "runs" / tag);
@@ -137,22 +143,53 @@ StudyResult run_couette_study(const StudyContext& ctx) {
     prune(ctx.out_dir / "runs" / tag);
   }
 
+  // D. Background pressure: p0 / 4 and 4 p0 at plot_dx, mirror_beta, as B.
+  std::string p0_table = "| p0 (Pa) | velocity_l2_error | profile | scatter |\n|---|---|---|---|\n";
+  {
+    const std::size_t k_plot =
+        static_cast<std::size_t>(std::find(dxs.begin(), dxs.end(), plot_dx) - dxs.begin());
+    for (const double p0 : {0.625, 2.5, 10.0}) {
+      double e = 0, prof = 0, scat = 0;
+      if (p0 == 2.5 && k_plot < dxs.size()) {  // B's own run
+        e = l2["mirror_beta"][k_plot];
+        prof = l2_profile["mirror_beta"][k_plot];
+        scat = l2_scatter["mirror_beta"][k_plot];
+      } else {
+        const std::string tag = fmt::format("p0_{:g}_mirror_beta_dx{:g}mm", p0, plot_dx * 1e3);
+        const auto m = runner.run(
+            tag, {dx_set(plot_dx), "boundary.map=mirror_beta", fmt::format("eos.p0={}", p0),
+                  fmt::format("time.end={}", t_run), "output.every=0.1"});
+        prune(ctx.out_dir / "runs" / tag);
+        e = get(m, "velocity_l2_error");
+        prof = get(m, "velocity_profile_error");
+        scat = get(m, "velocity_scatter_error");
+      }
+      r.metrics[fmt::format("p0_{:g}_velocity_l2_error", p0)] = e;
+      p0_table += fmt::format("| {:g} | {:.4g} | {:.4g} | {:.4g} |\n", p0, e, prof, scat);
+    }
+  }
+
   // Tables.
   std::ofstream csv(ctx.out_dir / "couette.csv");
   csv << "dx,particles,map,density_error_t0,velocity_l2_error,velocity_l2_error_abs,"
-         "wall_seconds\n";
+         "velocity_profile_error,velocity_scatter_error,wall_seconds\n";
   std::string table =
-      "| dx (mm) | particles | map | density_error_t0 | velocity_l2_error | wall s |\n"
-      "|---|---|---|---|---|---|\n";
+      "| dx (mm) | particles | map | density_error_t0 | velocity_l2_error | profile | scatter | "
+      "wall s |\n"
+      "|---|---|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < dxs.size(); ++k)
     for (const auto& map : maps) {
-      csv << fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.2f}\n", dxs[k], particles[k], map,
-                         rho_t0[map][k], l2[map][k], l2_abs[map][k], secs[map][k]);
-      table += fmt::format("| {:g} | {} | {} | {:.4g} | {:.4g} | {:.1f} |\n", dxs[k] * 1e3,
-                           particles[k], map, rho_t0[map][k], l2[map][k], secs[map][k]);
+      csv << fmt::format("{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.2f}\n", dxs[k],
+                         particles[k], map, rho_t0[map][k], l2[map][k], l2_abs[map][k],
+                         l2_profile[map][k], l2_scatter[map][k], secs[map][k]);
+      table += fmt::format("| {:g} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.1f} |\n",
+                           dxs[k] * 1e3, particles[k], map, rho_t0[map][k], l2[map][k],
+                           l2_profile[map][k], l2_scatter[map][k], secs[map][k]);
       const std::string key = fmt::format("dx{:g}mm_{}_", dxs[k] * 1e3, map);
       r.metrics[key + "density_error_t0"] = rho_t0[map][k];
       r.metrics[key + "velocity_l2_error"] = l2[map][k];
+      r.metrics[key + "velocity_profile_error"] = l2_profile[map][k];
+      r.metrics[key + "velocity_scatter_error"] = l2_scatter[map][k];
     }
   csv.close();
 
@@ -213,13 +250,25 @@ StudyResult run_couette_study(const StudyContext& ctx) {
         "Fig. 2's run is "
      << t_hydro << " s long as in the paper.\n\n"
      << "Velocity error: Barker eq. 25 with the square, sqrt(mean (v_theta,i - v_theta(r_i))^2), "
-        "divided by omega R_i = 0.025 m/s.\n\n"
+        "divided by omega R_i = 0.025 m/s. Its split (same norm and scale): *profile* = the "
+        "error of the mean azimuthal profile (particles binned in radius, bins of about dx), "
+        "*scatter* = the particles' spread around it; velocity_l2_error^2 = profile^2 + "
+        "scatter^2.\n\n"
+        "Initial masses: m_i = rho_i / sigma_ref,i, sigma_ref the node density of the ring "
+        "arrangement continued beyond both walls (`initial: {couette: {}}`), so the bulk starts "
+        "exactly at the radial balance and density_error_t0 is the wall treatment's own error "
+        "(see findings.md).\n\n"
      << table << "\n"
+     << "**What the error of B is made of** (D; dx = " << plot_dx * 1e3
+     << " mm, mirror_beta, t = " << t_run
+     << " s; only the background pressure p0 changed, a diagnosis, not a setting):\n\n"
+     << p0_table << "\n"
      << summary_markdown(r.summary) << "\n"
      << "![density at t = 0](density_t0.png)\n\n![density after " << t_hydro
      << " s](density_end.png)\n\n![error vs time](error_vs_time.png)\n\n"
      << "![error vs time from rest](error_vs_time_from_rest.png)\n\n"
-     << "![error vs dx](error_vs_dx.png)\n\n![velocity profile](profile.png)\n";
+     << "![error vs dx](error_vs_dx.png)\n\n![velocity profile](profile.png)\n\n"
+     << "![error split](error_split.png)\n\nFindings: [findings.md](findings.md).\n";
   return r;
 }
 

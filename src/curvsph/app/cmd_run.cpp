@@ -1,4 +1,5 @@
-// `curvsph run CASE.yaml [--out DIR] [--set key.path=value ...] [--threads N]`
+// `curvsph run CASE.yaml [--out DIR] [--set key.path=value ...] [--threads N]
+//  [--restart SNAPSHOT.vtp]`
 #include <fmt/format.h>
 
 #include <iostream>
@@ -17,6 +18,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   int threads = 0;
   bool quiet = false;
+  std::string restart;
 };
 
 const CommandRegistration reg{Command{
@@ -32,6 +34,10 @@ const CommandRegistration reg{Command{
       sub.add_option("--threads,-t", args->threads, "OpenMP threads (0: all cores)")
           ->check(CLI::NonNegativeNumber);
       sub.add_flag("--quiet,-q", args->quiet, "no progress line");
+      sub.add_option("--restart", args->restart,
+                     "start from a snapshot (particles_NNNNNN.vtp) of an earlier run of the same "
+                     "case, at its time in the series.pvd beside it")
+          ->check(CLI::ExistingFile);
       return [args] {
         // [mpi] every rank reads the case; a failure on any stops all with its message.
         const mpi::Comm comm = mpi::Comm::world();
@@ -41,6 +47,7 @@ const CommandRegistration reg{Command{
         o.out_dir = args->out;
         o.threads = args->threads;
         o.progress = !args->quiet;
+        o.restart = args->restart;
         const auto m = run_case(c, o);
         if (comm.root()) std::cout << m.dump(2) << std::endl;
         return 0;

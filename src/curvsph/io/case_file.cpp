@@ -220,9 +220,16 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!root.IsMap()) throw InputError(file, "", "the case file must be a YAML mapping");
   const Keys top(root, file, "");
-  top.allow({"name", "dimension", "resolution", "domain", "fluids", "eos", "density", "gravity",
-             "forcing", "walls", "boundary", "setup", "time", "output", "probes", "analysis",
-             "initial", "surface_tension", "parallel"});
+  top.allow({"name",       "dimension",
+             "resolution", "domain",
+             "fluids",     "eos",
+             "density",    "gravity",
+             "forcing",    "walls",
+             "boundary",   "setup",
+             "time",       "output",
+             "probes",     "analysis",
+             "initial",    "surface_tension",
+             "parallel",   "artificial_viscosity"});
   c.name = top.text("name", path.stem().string());
   const long dim = top.integer("dimension");
   if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
@@ -291,6 +298,12 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   if (den.has("delta_sph") && c.density.method == DensitySpec::Method::summation)
     den.fail(den.key("delta_sph"), "only applies to method: continuity");
 
+  if (top.has("artificial_viscosity")) {
+    const Keys av = top.sub("artificial_viscosity");
+    av.allow({"alpha"});
+    c.artificial_alpha = av.non_negative("alpha", 0.0);
+  }
+
   c.gravity = top.vector("gravity", D, Vec3d::Zero());
   if (top.has("forcing")) {
     const Keys frc = top.sub("forcing");
@@ -341,7 +354,8 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
       bnd.choice("shepard", {"geometric", "volume", "monolithic", "none"}, "geometric");
   c.boundary.wall_particles = bnd.boolean("wall_particles", false);
   c.boundary.wall_force = bnd.boolean("wall_force", false);
-  c.boundary.pressure = bnd.choice("pressure", {"symmetric", "consistent"}, "symmetric");
+  c.boundary.pressure =
+      bnd.choice("pressure", {"symmetric", "consistent", "tensile_control"}, "symmetric");
   const YAML::Node walls = top.raw("walls");
   if (top.has("walls") && !walls.IsSequence()) top.fail("walls", "must be a list of walls");
   const bool has_walls = top.has("walls") && walls.size() > 0;

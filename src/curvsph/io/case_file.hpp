@@ -51,7 +51,7 @@ struct BoundarySpec {
   std::string shepard = "geometric";
   bool wall_particles = false;
   bool wall_force = false;
-  std::string pressure = "symmetric";  // integrals: symmetric | consistent near-wall grad p  //
+  std::string pressure = "symmetric";  // integrals: symmetric | consistent | tensile_control  //
                                        // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
 };
 
@@ -97,6 +97,9 @@ struct Case {
   double drive_v0 = 0, drive_tau = 1;
   BoundarySpec boundary;
   double shifting = 0;  // particle shifting coefficient C (0: off); see particle_shifting.hpp
+  // artificial_viscosity.alpha: the delta-SPH momentum diffusion (physics/artificial_viscosity.hpp;
+  // 0: off, the default)
+  double artificial_alpha = 0;
   unsigned random_seed = 1;
   RelaxSpec relax;
   double t_end = 0;

@@ -4,6 +4,8 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <fstream>
 
 #include "curvsph/analysis/analysis.hpp"
@@ -11,6 +13,7 @@
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
 #include "curvsph/io/pvtp.hpp"
+#include "curvsph/io/vtk_reader.hpp"
 #include "curvsph/io/vtk_writer.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
@@ -20,6 +23,44 @@ namespace curvsph {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Set by SIGINT / SIGTERM while a time loop runs: the loop ends after the current step
+// (run.hpp). A signal handler may only store to a volatile sig_atomic_t.
+volatile std::sig_atomic_t g_stop_requested = 0;
+extern "C" void request_stop(int) {
+  g_stop_requested = 1;
+}
+
+// Installs request_stop for SIGINT and SIGTERM for the lifetime of the time loop and puts
+// the previous handlers back afterwards (a second run in the same process, tests).
+class StopOnSignal {
+ public:
+  StopOnSignal() {
+    g_stop_requested = 0;
+    old_int_ = std::signal(SIGINT, request_stop);
+    old_term_ = std::signal(SIGTERM, request_stop);
+  }
+  ~StopOnSignal() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+ private:
+  void (*old_int_)(int) = SIG_DFL;
+  void (*old_term_)(int) = SIG_DFL;
+};
+
+// The time of a snapshot, from the series.pvd beside it (the writer names every snapshot
+// there); throws if the file is not listed.
+double snapshot_time(const fs::path& vtp) {
+  const fs::path pvd = vtp.parent_path() / "series.pvd";
+  for (const auto& e : io::PvdSeries::read(pvd))
+    if (fs::path(e.file).filename() == vtp.filename()) return e.time;
+  throw std::runtime_error("restart: '" + vtp.filename().string() + "' is not listed in '" +
+                           pvd.string() + "'");
+}
 
 // Writes to log.txt (when files are written) and nowhere else: stderr belongs to progress.
 class RunLog {
@@ -99,6 +140,11 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
   });
   Solver<D>& solver = *solver_ptr;
+  if (!o.restart.empty()) {
+    const double t0 = snapshot_time(o.restart);
+    solver.restart(io::read_particles<D>(o.restart), t0);
+    log("restart from {} at t = {:.6g}", o.restart.string(), t0);
+  }
 
   io::PvdSeries series(o.out_dir / "series.pvd");
   int snapshot = 0;
@@ -204,16 +250,29 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const double eps = 1e-9 * std::max(1.0, t_end);
   const double out_every = c.output_every > 0 ? c.output_every : t_end;
   const double probe_every = c.probe_every > 0 ? c.probe_every : out_every;
-  double next_out = out_every, next_probe = probe_every;
+  // The first output and probe times after the start (t = 0, or a restart's time).
+  auto first_after = [&](double every) {
+    return (std::floor(solver.time() / every + 1e-9) + 1) * every;
+  };
+  double next_out = first_after(out_every), next_probe = first_after(probe_every);
   write_snapshot("");
-  if (any_probes) write_probes(0);
+  if (any_probes) write_probes(solver.time());
   observe();
 
   Progress progress(o.progress && comm.root(), t_end, n_particles);
   const auto loop_start = std::chrono::steady_clock::now();
   bool unstable = false;
+  bool stopped = false;
+  const StopOnSignal stop_on_signal;
   try {
     while (solver.time() < t_end - eps && (c.max_steps == 0 || solver.steps() < c.max_steps)) {
+      // [mpi] every rank stops at the same step when any was signalled.
+      stopped = g_stop_requested != 0;
+      if (parallel) stopped = comm.max(static_cast<std::int64_t>(stopped)) > 0;
+      if (stopped) {
+        log("stopped by a signal at t = {:.6g}, step {}", solver.time(), solver.steps());
+        break;
+      }
       const double t = solver.time();
       const double cap = std::min({t_end - t, next_out - t, next_probe - t});
       solver.step(static_cast<Real>(cap));
@@ -287,6 +346,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   add_decomposition_metrics(solver.decomposition(), m);
   m["time_reached"] = solver.time();
   m["unstable"] = unstable ? 1 : 0;
+  m["stopped"] = stopped ? 1 : 0;  // ended by SIGINT / SIGTERM before time.end
   if (const auto& rr = solver.relax_result()) {
     m["relax_steps"] = rr->steps;
     m["relax_node_density_spread"] = rr->spread;

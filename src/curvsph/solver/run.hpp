@@ -13,10 +13,16 @@ struct RunOptions {
   int threads = 0;          // 0: OpenMP default
   bool progress = true;     // progress line on stderr
   bool write_files = true;  // false: no VTK/probes/log (validation sweeps); metrics still returned
+  // A snapshot (.vtp) of an earlier run of the same case to start from instead of the case's
+  // initial particles; its time is read from the series.pvd beside it. Empty: start at t = 0.
+  std::filesystem::path restart;
 };
 
 // Runs the case; returns the metrics (also written to out_dir/metrics.json). On instability it
-// writes a last snapshot and rethrows InstabilityError.
+// writes a last snapshot and rethrows InstabilityError. SIGINT or SIGTERM during the time loop
+// ends the run after the current step as if time.end had been reached there (the analyses
+// run, metrics.json is written with `stopped` = 1 and the time reached), so that a long run
+// cut short by hand still leaves its figures.
 nlohmann::json run_case(const Case& c, const RunOptions& options);
 
 }  // namespace curvsph

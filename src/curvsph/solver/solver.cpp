@@ -11,6 +11,7 @@
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/parallel/agree.hpp"
+#include "curvsph/physics/artificial_viscosity.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
@@ -173,6 +174,8 @@ void Solver<D>::compute_rates(Real dt_rho) {
   {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_, pair_, own);
+    add_artificial_viscosity(P_, cells_, W_, Real(case_.artificial_alpha) * W_.h * F_.eos.c0,
+                             F_.rho0, own);
     if (!case_.surface_tension.empty()) {
       const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
                                             boundary_ ? boundary_->images() : WallImages<D>{},
@@ -190,6 +193,13 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   Stopwatch sw{times_.forces};
   body_forces(P_, F_);
+}
+
+template <int D>
+void Solver<D>::restart(Particles<D> state, double t) {
+  P_ = std::move(state);
+  for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
+  t_ = t;
 }
 
 template <int D>

@@ -35,6 +35,9 @@ class Solver {
  public:
   explicit Solver(const Case& c);
 
+  // Replaces the initial particles and time by a saved state (a snapshot of an earlier run of
+  // the same case: positions, velocities, masses, densities); call before initialize().
+  void restart(Particles<D> state, double t);
   // Computes densities, pressures and accelerations of the initial state.
   void initialize();
   // Advances one time step of at most dt_cap (to land on output times); throws

@@ -83,6 +83,14 @@
 //    (iii) p_b clamped at the background pressure where the hydrostatic extrapolation goes
 //    negative above the free surface: the crossing comes sooner (0.68 against 0.79).
 //
+// 2d. `boundary.pressure: tensile_control`: the tensile instability control (TIC) of Sun,
+//    Colagrossi, Marrone & Zhang (2017, delta+-SPH, CMAME 315) at the wall: a particle
+//    in tension (p_i < 0) takes the difference form of 2b, (p_j - p_i) and (p_b - p_i),
+//    instead of the sum form, whose 2 p_i term pulls a particle in tension towards its
+//    neighbours and, through the wall term (p_b + p_i) W n A, onto the wall; p_i >= 0 keeps
+//    the symmetric form and its wall stiffness. As in 2b the correction fades out where a
+//    free surface cuts the support (Sun et al. also keep the sum form at the free surface).
+//
 // 3. Wall pressure. p_b is extrapolated from the fluid around the element centre x_b by a
 //    Shepard average with the hydrostatic correction (grad p = rho g at rest):
 //      p_b = sum_j (p_j + rho_j g.(x_b - x_j)) W_bj V_j / sum_j W_bj V_j.
@@ -156,6 +164,7 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   }
   wall_force_ = c.boundary.wall_force;
   consistent_ = c.boundary.pressure == "consistent";
+  tensile_ = c.boundary.pressure == "tensile_control";
   dx_ = static_cast<Real>(c.dx);
 }
 
@@ -413,8 +422,9 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       wn += wa * en_[b];
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
-    if (consistent_) {
-      // Item 2b: remove p_i times the discrete residual of the constant-field identity.
+    if (consistent_ || (tensile_ && P.p[i] < 0)) {
+      // Item 2b: remove p_i times the discrete residual of the constant-field identity (item
+      // 2d: only where p_i < 0).
       const Real si = P.sigma[i];
       const Real inv_si2 = 1 / (si * si);
       Vec<D> c = Vec<D>::Zero();

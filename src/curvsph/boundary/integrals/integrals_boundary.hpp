@@ -6,8 +6,8 @@
 //
 // Optional keys: `boundary.wall_force: true` adds a short-range repulsion for particles closer
 // than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
-// symmetric` chooses the near-wall pressure gradient (item 2b of the .cpp; symmetric by
-// default).
+// symmetric | tensile_control` chooses the near-wall pressure gradient (items 2b and 2d of the
+// .cpp; symmetric by default).
 #include <memory>
 #include <vector>
 
@@ -63,7 +63,8 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   ShepardQuadrature quad_;
   GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
   bool wall_force_ = false;
-  bool consistent_ = false;  // boundary.pressure: symmetric (default) | consistent
+  bool consistent_ = false;  // boundary.pressure: consistent
+  bool tensile_ = false;     // boundary.pressure: tensile_control (consistent where p_i < 0)
   Real dx_ = 0;
   bool built_ = false;
 

@@ -1,0 +1,49 @@
+#pragma once
+// The momentum diffusive term of the delta-SPH scheme (Antuono, Colagrossi, Marrone & Molteni
+// 2010, CPC 181 eq. 3; analysed with the density diffusion in Antuono, Colagrossi & Marrone
+// 2012, CPC 183, ref. [1] of Calderon et al., whose §3.1 runs "diffusive terms for both
+// equations"): Monaghan's artificial viscosity without its quadratic part,
+//   du_i/dt += alpha h c0 (rho0 / rho_i) sum_j pi_ij grad_i W_ij V_j,
+//   pi_ij = (u_j - u_i).(x_j - x_i) / (|x_j - x_i|^2 + eta^2),   eta^2 = 0.01 h^2
+// (eta keeps coincident particles finite, Monaghan 1992). It removes energy from approaching
+// pairs only in proportion to their relative normal velocity, so it damps the particle-scale
+// acoustic noise that the density diffusion alone leaves in the velocity field.
+// Continuum limit (Taylor expansion of u_j - u_i under the sum, isotropic neighbourhood):
+//   sum_j pi_ij grad_i W_ij V_j -> (lap u + 2 grad div u) / (2 (D + 2)),
+// i.e. a shear viscosity nu = alpha h c0 / (2 (D + 2)) with a bulk part (Monaghan 2005 §6);
+// the unit test checks this limit on a lattice.
+// Near walls the sum is truncated like the fluid pressure sum; the boundary model's 1/gamma
+// (boundary_model.hpp contract) renormalises it when this runs before add_accelerations().
+#include <cmath>
+
+#include "curvsph/core/parallel.hpp"
+#include "curvsph/core/particles.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+
+namespace curvsph {
+
+// Adds the term to P.a (after the fluid pair forces); nothing when alpha_h_c0 = alpha h c0 is
+// 0 (the default: off). `rho0` per phase; `owned`: the particles computed (computed_count; -1:
+// all). Neighbours through the cell list's sorted copy of the positions: `cells` must have been
+// built from P.x as it is.
+template <int D>
+void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                              Real alpha_h_c0, const std::vector<Real>& rho0, Index owned = -1) {
+  if (alpha_h_c0 == 0) return;
+  const Real eta2 = Real(0.01) * W.h * W.h;
+  parallel_for(computed_count(P, owned), [&](Index i) {
+    const Vec<D> vi = P.v[i];
+    Vec<D> sum = Vec<D>::Zero();
+    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
+      if (j == i) return;
+      // r = x_i - x_j, grad_i W_ij = r f; (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
+      const Real f = W.gradient_factor(std::sqrt(r2));
+      const Real pi = (vi - P.v[j]).dot(r) / (r2 + eta2);
+      sum += (pi * f * P.mass[j] / P.rho[j]) * r;
+    });
+    P.a[i] += alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[i])] / P.rho[i] * sum;
+  });
+}
+
+}  // namespace curvsph

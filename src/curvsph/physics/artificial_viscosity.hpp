@@ -31,18 +31,21 @@ template <int D>
 void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                               Real alpha_h_c0, const std::vector<Real>& rho0, Index owned = -1) {
   if (alpha_h_c0 == 0) return;
+  const Index n = computed_count(P, owned);
   const Real eta2 = Real(0.01) * W.h * W.h;
-  parallel_for(computed_count(P, owned), [&](Index i) {
-    const Vec<D> vi = P.v[i];
-    Vec<D> sum = Vec<D>::Zero();
-    cells.for_each_neighbor(P.x[i], [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      // r = x_i - x_j, grad_i W_ij = r f; (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
-      const Real f = W.gradient_factor(std::sqrt(r2));
-      const Real pi = (vi - P.v[j]).dot(r) / (r2 + eta2);
-      sum += (pi * f * P.mass[j] / P.rho[j]) * r;
-    });
-    P.a[i] += alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[i])] / P.rho[i] * sum;
+  // Each pair once (CellList::for_each_pair): with r = x_i - x_j and grad_i W_ij = f r,
+  // pi_ji = pi_ij and grad_j W_ji = -f r, so j receives the same pair factor with the
+  // opposite sign, weighted by its own coefficient and i's volume. [mpi] A pair with a halo
+  // copy adds to the owned particle only; a pair of two halo copies is skipped.
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (i >= n && j >= n) return;
+    // (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
+    const Real pf = W.gradient_factor(std::sqrt(r2)) * (P.v[i] - P.v[j]).dot(r) / (r2 + eta2);
+    auto coef = [&](Index k) {
+      return alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[k])] / P.rho[k];
+    };
+    if (i < n) P.a[i] += (coef(i) * pf * P.mass[j] / P.rho[j]) * r;
+    if (j < n) P.a[j] -= (coef(j) * pf * P.mass[i] / P.rho[i]) * r;
   });
 }
 

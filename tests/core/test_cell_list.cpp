@@ -70,11 +70,11 @@ TEST(CellList, MatchesBruteForceOnShortPeriodicAxes3D) {
 }
 
 // The symmetric visitor for_each_pair against brute force: every pair within the support
-// exactly once (i != j), with the minimal-image r_ij = x_i - x_j; and its slab colouring: two
-// slabs of one colour never touch the same particle (they run at the same time).
+// exactly once (i != j), with the minimal-image r_ij = x_i - x_j; and its tile colouring: two
+// tiles of one colour never touch the same particle (they run at the same time).
 template <int D>
 void check_pairs_against_brute_force(std::array<bool, 3> periodic, unsigned seed,
-                                     Real support = 0.11, int min_slabs = 3, double len0 = 1) {
+                                     Real support = 0.11, int min_tiles = 3, double len0 = 1) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
   const Vec3d lo(-0.3, 0.1, 0.2), hi(-0.3 + len0, 0.8, 1.1);
@@ -86,12 +86,11 @@ void check_pairs_against_brute_force(std::array<bool, 3> periodic, unsigned seed
   cells.build(x);
   const Index n = static_cast<Index>(x.size());
   std::vector<std::pair<Index, Index>> found;
-  std::array<std::vector<int>, 2> toucher;  // per colour, the slab that touched a particle
-  toucher[0].assign(n, -1);
-  toucher[1].assign(n, -1);
+  std::array<std::vector<int>, 4> toucher;  // per colour, the tile that touched a particle
+  for (auto& t : toucher) t.assign(n, -1);
   int conflicts = 0;
-  ASSERT_GE(cells.slab_count(), min_slabs);  // else the colouring is not exercised
-  for (int k = 0; k < cells.slab_count(); ++k) {
+  ASSERT_GE(cells.tile_count(), min_tiles);  // else the colouring is not exercised
+  for (int k = 0; k < cells.tile_count(); ++k) {
     auto f = [&](Index i, Index j, const Vec<D>& r, Real r2) {
       found.emplace_back(std::min(i, j), std::max(i, j));
       EXPECT_NE(i, j);
@@ -99,12 +98,12 @@ void check_pairs_against_brute_force(std::array<bool, 3> periodic, unsigned seed
       EXPECT_NEAR((r - s).norm(), 0.0, 1e-12);
       EXPECT_EQ(r2, r.squaredNorm());
       for (const Index p : {i, j}) {
-        int& t = toucher[k % 2][p];
+        int& t = toucher[static_cast<std::size_t>(cells.tile_colour(k))][p];
         if (t != -1 && t != k) ++conflicts;
         t = k;
       }
     };
-    cells.for_each_pair_in_slab(k, f);
+    cells.for_each_pair_in_tile(k, f);
   }
   EXPECT_EQ(conflicts, 0);
   std::vector<std::pair<Index, Index>> brute;
@@ -151,8 +150,8 @@ TEST(CellList, PairsMatchBruteForce3DMixed) {
 TEST(CellList, PairsMatchBruteForce3DOpen) {
   check_pairs_against_brute_force<3>({false, false, false}, 16);
 }
-// A box three times longer along axis 0: the slabs are cut along axis 0, which the half
-// stencil walks both ways (slabs 2 reach thick).
+// A box three times longer along axis 0: the tiles are cut along axis 0 (and another), which the
+// half stencil walks both ways (tiles 2 reach thick).
 TEST(CellList, PairsMatchBruteForce2DSlabsAlongAxis0) {
   check_pairs_against_brute_force<2>({true, false, false}, 20, 0.11, 10, 3.0);
 }
@@ -167,7 +166,7 @@ TEST(CellList, PairsMatchBruteForceOnShortPeriodicAxes2D) {
 TEST(CellList, PairsMatchBruteForceOnShortPeriodicAxes3D) {
   check_pairs_against_brute_force<3>({true, true, true}, 18, 0.3, 2);
 }
-// Only axis 1 is short (reach 1, three images): the slabs are cut along axis 2.
+// Only axis 1 is short (reach 1, three images): tiles are cut along axis 2 (and 0).
 TEST(CellList, PairsMatchBruteForceOnOneShortPeriodicAxis3D) {
   check_pairs_against_brute_force<3>({false, true, false}, 19, 0.3, 3);
 }

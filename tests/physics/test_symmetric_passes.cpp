@@ -99,7 +99,7 @@ void check_against_brute_force(int n_side, bool periodic, bool halo) {
     L.cells.configure(L.W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
     L.cells.build(P.x);
   }
-  ASSERT_GE(L.cells.slab_count(), 3);  // several slabs of each colour
+  ASSERT_GE(L.cells.tile_count(), 3);  // several tiles
   FluidParams<D> F;
   F.rho0 = {1.0, 1.0};
   F.viscosity = {0.05, 0.2};  // mu_ij is the harmonic mean between the two phases

@@ -38,14 +38,7 @@ void ghost_node_density(const std::vector<Vec<D>>& x, const CellList<D>& cells,
   go.cells = &cells;
   const std::vector<Vec<D>> v0(x.size(), Vec<D>::Zero());
   out.ghosts.build(x, v0, walls, go);
-  Vec3d lo = Vec3d::Zero(), hi = Vec3d::Zero();
-  std::array<bool, 3> per{false, false, false};
-  for (int d = 0; d < D; ++d) {
-    lo[d] = cells.lower(d);
-    hi[d] = cells.lower(d) + cells.length(d);
-    per[d] = cells.periodic(d);
-  }
-  out.ghost_cells.configure(W.support, lo, hi, per);
+  out.ghost_cells.configure_like(cells, W.support);
   out.ghost_cells.build(out.ghosts.x);
   node_density<D>(out.ghosts.x, x, cells, &out.ghosts, &out.ghost_cells, W, out.n_ghost);
   node_density<D>(x, x, cells, &out.ghosts, &out.ghost_cells, W, out.n_fluid);

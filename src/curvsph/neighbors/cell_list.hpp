@@ -44,6 +44,18 @@ class CellList {
   }
 
   Real support() const { return support_; }
+  // The same domain and periodicity as `other`, for another support (a second list over
+  // other points in the same box: ghosts, packing).
+  void configure_like(const CellList& other, Real support) {
+    Vec3d lo = Vec3d::Zero(), hi = Vec3d::Zero();
+    std::array<bool, 3> per{false, false, false};
+    for (int d = 0; d < D; ++d) {
+      lo[d] = other.lower(d);
+      hi[d] = other.lower(d) + other.length(d);
+      per[d] = other.periodic(d);
+    }
+    configure(support, lo, hi, per);
+  }
   bool periodic(int d) const { return periodic_[d]; }
   Real length(int d) const { return length_[d]; }
   Real lower(int d) const { return lo_[d]; }
@@ -328,37 +340,7 @@ class CellList {
     std::array<std::array<int, kMaxAxisVisits>, D> cell{}, rel{};
     std::array<std::array<Real, kMaxAxisVisits>, D> offset{};
     std::array<int, D> visits{};
-    for (int d = 1; d < D; ++d) {
-      int n = 0;
-      if (periodic_[d] && count_[d] < 2 * reach_ + 1) {
-        for (int s = -1; s <= 1; ++s)
-          for (int k = 0; k < count_[d]; ++k) {
-            cell[d][n] = k;
-            rel[d][n] = k + s * count_[d] - c[d];  // unwrapped offset: -o seen from the other
-            offset[d][n++] = static_cast<Real>(s) * length_[d];
-          }
-      } else {
-        for (int off = -reach_; off <= reach_; ++off) {
-          int k = c[d] + off;
-          Real sh = 0;
-          if (periodic_[d]) {
-            if (k < 0) {
-              k += count_[d];
-              sh = -length_[d];
-            } else if (k >= count_[d]) {
-              k -= count_[d];
-              sh = length_[d];
-            }
-          } else if (k < 0 || k >= count_[d]) {
-            continue;
-          }
-          cell[d][n] = k;
-          rel[d][n] = off;
-          offset[d][n++] = sh;
-        }
-      }
-      visits[d] = n;
-    }
+    for (int d = 1; d < D; ++d) visits[d] = axis_visits(c[d], d, cell[d], rel[d], offset[d]);
     std::array<int, D> at{};
     while (true) {
       int sign = 0;  // lexicographic sign of (o_{D-1}, .., o_1)
@@ -412,6 +394,46 @@ class CellList {
     }
   }
 
+  // The cells to visit along axis d around cell coordinate c: their index (`cell`), their
+  // unwrapped offset from c (`rel`, periodic image included) and the periodic image shift of
+  // each (`offset`); returns their count.
+  int axis_visits(int c, int d, std::array<int, kMaxAxisVisits>& cell,
+                  std::array<int, kMaxAxisVisits>& rel,
+                  std::array<Real, kMaxAxisVisits>& offset) const {
+    int n = 0;
+    if (periodic_[d] && count_[d] < 2 * reach_ + 1) {
+      // Too few cells to visit each once in a stencil: every cell, in each of the three
+      // images that can reach x (the length is at least two supports, so at most one
+      // image of a point lies within the support).
+      for (int s = -1; s <= 1; ++s)
+        for (int k = 0; k < count_[d]; ++k) {
+          cell[n] = k;
+          rel[n] = k + s * count_[d] - c;
+          offset[n++] = static_cast<Real>(s) * length_[d];
+        }
+      return n;
+    }
+    for (int off = -reach_; off <= reach_; ++off) {
+      int k = c + off;
+      Real sh = 0;
+      if (periodic_[d]) {
+        if (k < 0) {
+          k += count_[d];
+          sh = -length_[d];
+        } else if (k >= count_[d]) {
+          k -= count_[d];
+          sh = length_[d];
+        }
+      } else if (k < 0 || k >= count_[d]) {
+        continue;
+      }
+      cell[n] = k;
+      rel[n] = off;
+      offset[n++] = sh;
+    }
+    return n;
+  }
+
   // Calls scan(begin, end, shift) for every contiguous range of sorted_ that holds the cells
   // within reach_ of x's cell, shift being the periodic image offset of that range.
   template <class S>
@@ -421,38 +443,10 @@ class CellList {
     std::array<std::array<int, kMaxAxisVisits>, D> cell{};
     std::array<std::array<Real, kMaxAxisVisits>, D> offset{};
     std::array<int, D> visits{};
+    std::array<int, kMaxAxisVisits> rel{};  // unused here
     for (int d = 1; d < D; ++d) {
-      int n = 0;
-      if (periodic_[d] && count_[d] < 2 * reach_ + 1) {
-        // Too few cells to visit each once in a stencil: every cell, in each of the three
-        // images that can reach x (the length is at least two supports, so at most one
-        // image of a point lies within the support).
-        for (int s = -1; s <= 1; ++s)
-          for (int k = 0; k < count_[d]; ++k) {
-            cell[d][n] = k;
-            offset[d][n++] = static_cast<Real>(s) * length_[d];
-          }
-      } else {
-        for (int off = -reach_; off <= reach_; ++off) {
-          int k = c[d] + off;
-          Real sh = 0;
-          if (periodic_[d]) {
-            if (k < 0) {
-              k += count_[d];
-              sh = -length_[d];
-            } else if (k >= count_[d]) {
-              k -= count_[d];
-              sh = length_[d];
-            }
-          } else if (k < 0 || k >= count_[d]) {
-            continue;
-          }
-          cell[d][n] = k;
-          offset[d][n++] = sh;
-        }
-      }
-      visits[d] = n;
-      if (n == 0) return;
+      visits[d] = axis_visits(c[d], d, cell[d], rel, offset[d]);
+      if (visits[d] == 0) return;
     }
     std::array<int, D> at{};
     while (true) {

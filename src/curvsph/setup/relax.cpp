@@ -46,16 +46,7 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
   RelaxResult res;
   GhostSet<D> G;
   CellList<D> gcells;
-  {
-    Vec3d lo = Vec3d::Zero(), hi = Vec3d::Zero();
-    std::array<bool, 3> per{false, false, false};
-    for (int d = 0; d < D; ++d) {
-      lo[d] = cells.lower(d);
-      hi[d] = cells.lower(d) + cells.length(d);
-      per[d] = cells.periodic(d);
-    }
-    gcells.configure(W.support, lo, hi, per);
-  }
+  gcells.configure_like(cells, W.support);
   GhostOptions<D> gopt;
   gopt.map = opt.map;
   gopt.support = W.support;

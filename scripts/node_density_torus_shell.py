@@ -80,6 +80,11 @@ def tail(s_over_h):
     return f0 + (f1 - f0) * (s_over_h - x0) / (x1 - x0)
 
 
+def means(v):
+    """Means of the three columns of (|n/n_ref - 1|, n/n_ref - 1, model - 1) records."""
+    return tuple(sum(col) / len(v) for col in zip(*v))
+
+
 def mean_abs_gauss(b, sd, n=41):
     """E|b + N(0, sd)| by Gauss-Hermite-like midpoint sampling on +-4 sd."""
     if sd <= 0:
@@ -134,19 +139,17 @@ def measured(path, h, sd, png=None):
         print(f"{mp}: dev = {sum(a for a, _, _ in allv) / len(allv):.4f} over {len(allv)} sampled ghosts")
         print("  |theta| (deg)  shell z  dev     mean(n/n_ref-1)  model mean  count")
         for k in sorted(by_th):
-            v = by_th[k]
+            dev, mean, model = means(by_th[k])
             print(f"  {30 * k:3d}-{30 * k + 30:3d}      {shell(math.radians(30 * k + 15)):.3f}   "
-                  f"{sum(a for a, _, _ in v) / len(v):.4f}  {sum(b for _, b, _ in v) / len(v):+.4f}"
-                  f"          {sum(c for _, _, c in v) / len(v):+.4f}     {len(v)}")
+                  f"{dev:.4f}  {mean:+.4f}          {model:+.4f}     {len(by_th[k])}")
         print("  depth/2h       dev     mean(n/n_ref-1)  model mean  count")
         for k in sorted(by_z):
-            v = by_z[k]
-            print(f"  {k / 6:.2f}-{(k + 1) / 6:.2f}      {sum(a for a, _, _ in v) / len(v):.4f}  "
-                  f"{sum(b for _, b, _ in v) / len(v):+.4f}          "
-                  f"{sum(c for _, _, c in v) / len(v):+.4f}     {len(v)}")
+            dev, mean, model = means(by_z[k])
+            print(f"  {k / 6:.2f}-{(k + 1) / 6:.2f}      {dev:.4f}  {mean:+.4f}          "
+                  f"{model:+.4f}     {len(by_z[k])}")
         if mp == "density_preserving":
             plot = {"th": by_th, "z": by_z}
-            full = [a for (a, _, c), r in zip(allv, allv) if c > -1e-12]
+            full = [a for a, _, c in allv if c > -1e-12]
             print(f"  ghosts with complete support (model F = 0): dev {sum(full) / max(1, len(full)):.4f}"
                   f" over {len(full)}")
             print(f"  model dev at this h (noise sd {sd}): {predict(h / 1.5, sd):.4f}")

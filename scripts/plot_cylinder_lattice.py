@@ -16,6 +16,18 @@ out = sys.argv[1]
 levels = [-0.25, -1 / 6, -1 / 12, 0, 1 / 12, 1 / 6, 0.25]
 
 
+
+def finish(fig, ax, name, xlabel, ylabel, title, **legend):
+    """Labels, legend and grid of a line plot; writes OUT/name and closes the figure."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(**legend)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
 def field(m):
     p = os.path.join(out, f"fig9_{m}", "velocity.csv")
     if not os.path.exists(p):
@@ -107,14 +119,8 @@ if fm is not None and fd is not None:
                 "| closest particle (r - R) / dx |\n|---|---|---|---|---|\n")
         f.write("\n".join(rows_md) + "\n")
     ax.axhline(1.0, color="0.5", lw=0.8)
-    ax.set_xlabel("(r - R) / dx (distance from the obstacle's wall)")
-    ax.set_ylabel("n / n_mean")
-    ax.set_title("Fig. 9 runs at the end: particle density next to the obstacle")
-    ax.legend()
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "fig9_radial_density.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, ax, "fig9_radial_density.png", "(r - R) / dx (distance from the obstacle's wall)",
+           "n / n_mean", "Fig. 9 runs at the end: particle density next to the obstacle")
 
 # Fig. 9 companion: mean v_x against time (is the flow steady at the end?).
 hist = {m: os.path.join(out, f"fig9_{m}", "history.csv") for m in ("mirror", "density_preserving")}
@@ -123,14 +129,7 @@ if all(os.path.exists(p) for p in hist.values()):
     for (m, p), c in zip(hist.items(), ("tab:red", "tab:blue")):
         a = np.loadtxt(p, delimiter=",", skiprows=1, ndmin=2)
         ax.plot(a[:, 0], a[:, 1], "o-", color=c, ms=3, label=m)
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("mean v_x")
-    ax.set_title("Fig. 9 runs (v0 = 0.5): mean v_x")
-    ax.legend()
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "fig9_history.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, ax, "fig9_history.png", "t (s)", "mean v_x", "Fig. 9 runs (v0 = 0.5): mean v_x")
 
 p = os.path.join(out, "tmax_mean.csv")
 if os.path.exists(p):
@@ -149,12 +148,6 @@ if os.path.exists(p):
         ax.plot(v0, [float(x["tmax_min"]) for x in r], "v:", color=c, ms=4, label=f"{m}: min")
     ax.text(0.02, 0.5, "mirror_coarsest: diagnostic, the mirror at its own coarsest dx",
             transform=ax.transAxes, fontsize=7, va="top")
-    ax.set_xlabel("v0")
-    ax.set_ylabel("t_max (s)")
     ax.set_ylim(0, 10.5)
-    ax.set_title("Lattice of cylinders, low resolution (Fig. 10)")
-    ax.legend(fontsize=8, loc="lower left")
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "fig10_tmax.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, ax, "fig10_tmax.png", "v0", "t_max (s)",
+           "Lattice of cylinders, low resolution (Fig. 10)", fontsize=8, loc="lower left")

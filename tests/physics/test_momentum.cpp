@@ -49,16 +49,8 @@ void pair_terms(Particles<D>& P, const Lat& L, const FluidParams<D>& F, bool con
 template <int D>
 void check_pair_forces_cancel(bool continuity) {
   Lattice<D> L(D == 2 ? 24 : 10, 1.3, 0.3, 3);
-  std::mt19937 rng(17);
-  std::uniform_real_distribution<double> U(-1, 1);
   auto& P = L.P;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    for (int d = 0; d < D; ++d) P.v[i][d] = U(rng);
-    P.p[i] = 100 * U(rng);
-    P.mass[i] *= 1 + 0.5 * U(rng);
-    P.rho[i] = 1 + 0.1 * U(rng);
-    P.sigma[i] = P.rho[i] / P.mass[i];
-  }
+  L.randomize_state(17);
   const auto F = params<D>(0.05, continuity ? 0.1 : 0);
   std::vector<Vec<D>> grad_rho;
   if (continuity) renormalised_density_gradient(P, L.cells, L.W, grad_rho);

@@ -85,16 +85,7 @@ template <int D>
 void check_against_brute_force(int n_side, bool periodic, bool halo) {
   test::Lattice<D> L(n_side, 1.5, 0.3, 5);
   auto& P = L.P;
-  std::mt19937 rng(23);
-  std::uniform_real_distribution<double> U(-1, 1);
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    for (int d = 0; d < D; ++d) P.v[i][d] = U(rng);
-    P.p[i] = 100 * U(rng);
-    P.mass[i] *= 1 + 0.5 * U(rng);
-    P.rho[i] = 1 + 0.1 * U(rng);
-    P.sigma[i] = P.rho[i] / P.mass[i];
-    P.phase[i] = U(rng) > 0 ? 1 : 0;
-  }
+  L.randomize_state(23, true);
   if (!periodic) {  // the same points on an open grid (bounding box cells, no images)
     L.cells.configure(L.W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
     L.cells.build(P.x);

@@ -41,6 +41,22 @@ struct Lattice {
     cells.build(P.x);
   }
 
+  // A random flow state (seeded): velocities in [-1, 1]^D, pressures in [-100, 100], masses
+  // scaled by [0.5, 1.5], densities in [0.9, 1.1] with sigma = rho / m, and, with
+  // `two_phases`, a random phase 0 or 1 — for pair passes that must hold for any state.
+  void randomize_state(unsigned seed, bool two_phases = false) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      for (int d = 0; d < D; ++d) P.v[i][d] = U(rng);
+      P.p[i] = 100 * U(rng);
+      P.mass[i] *= 1 + 0.5 * U(rng);
+      P.rho[i] = 1 + 0.1 * U(rng);
+      P.sigma[i] = P.rho[i] / P.mass[i];
+      if (two_phases) P.phase[i] = U(rng) > 0 ? 1 : 0;
+    }
+  }
+
   // Far enough from the box faces that no neighbour crosses the periodic seam.
   bool interior(Index i, double margin) const {
     for (int d = 0; d < D; ++d)

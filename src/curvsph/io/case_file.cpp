@@ -288,7 +288,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.eos.p0 = eos.number("p0", 0.0);
 
   const Keys den = top.sub("density");
-  den.allow({"method", "delta_sph", "shifting"});
+  den.allow({"method", "delta_sph", "diffusion_term", "shifting"});
   c.density.method = den.choice("method", {"summation", "continuity"}, "summation") == "summation"
                          ? DensitySpec::Method::summation
                          : DensitySpec::Method::continuity;
@@ -297,6 +297,13 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   if (c.shifting > 1) den.fail(den.key("shifting"), "must be <= 1 (typical: 0.01-0.05)");
   if (den.has("delta_sph") && c.density.method == DensitySpec::Method::summation)
     den.fail(den.key("delta_sph"), "only applies to method: continuity");
+  const std::string term =
+      den.choice("diffusion_term", {"antuono", "molteni", "fourtakas"}, "antuono");
+  c.density.diffusion = term == "antuono"   ? DensitySpec::Diffusion::antuono
+                        : term == "molteni" ? DensitySpec::Diffusion::molteni
+                                            : DensitySpec::Diffusion::fourtakas;
+  if (den.has("diffusion_term") && c.density.method == DensitySpec::Method::summation)
+    den.fail(den.key("diffusion_term"), "only applies to method: continuity");
 
   if (top.has("artificial_viscosity")) {
     const Keys av = top.sub("artificial_viscosity");

@@ -42,6 +42,10 @@ struct EosSpec {
 struct DensitySpec {
   enum class Method { summation, continuity } method = Method::summation;
   double delta_sph = 0.1;  // Antuono et al. delta; 0 switches the diffusive term off
+  // The diffusive term's form (physics/density.hpp): antuono (renormalised gradient, one
+  // pass more), molteni (plain density difference), fourtakas (difference less its
+  // hydrostatic part).
+  enum class Diffusion { antuono, molteni, fourtakas } diffusion = Diffusion::antuono;
 };
 
 struct BoundarySpec {

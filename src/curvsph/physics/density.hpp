@@ -1,6 +1,7 @@
 #pragma once
 // Density by summation (Barker eq. 8: sigma_i = sum_j W_ij, rho_i = m_i sigma_i) and by the
-// continuity equation with the delta-SPH diffusive term of Antuono et al. (2010, 2012):
+// continuity equation with a delta-SPH diffusive term, by default Antuono et al.'s (2010, 2012;
+// the other forms at DensityDiffusion):
 //   drho_i/dt = rho_i sum_j V_j (u_i - u_j).grad_i W_ij
 //             + delta h c0 sum_j V_j psi_ij.grad_i W_ij,
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>^L_i + <grad rho>^L_j),
@@ -107,32 +108,76 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
   renormalised_density_gradient(P, cells, W, grad_rho, pf);
 }
 
-// Density rate of the continuity equation with the delta-SPH term (header comment); grad_rho
-// is the renormalised gradient, or nullptr when delta = 0. Per pair, with f = f_ij
-// (grad_i W_ij = f r_ij):
+// The delta-SPH diffusive term's form (case key density.diffusion_term). The pair term is
+//   delta h c0 V_j psi_ij.grad_i W_ij,  psi_ij.r_ij = -2 rho^T_ji - (<grad rho>_i + <grad
+//   rho>_j).r_ij
+// (r_ij = x_i - x_j; the second part only with the renormalised gradient), where
+//   antuono:   rho^T_ji = rho_j - rho_i, with <grad rho>^L (Antuono et al. 2010, 2012): psi.r
+//              vanishes for every linear field; it needs the gradient pass before this one;
+//   molteni:   rho^T_ji = rho_j - rho_i, no gradient (Molteni & Colagrossi 2009): diffuses a
+//              hydrostatic density profile too;
+//   fourtakas: rho^T_ji = rho_j - rho_i - rho^H_ji, no gradient (Fourtakas, Dominguez, Vacondio
+//              & Rogers 2019, Comput. Fluids 190: 346-361, the dynamic density): the part
+//              rho^H_j - rho^H_i of a hydrostatic state is taken out, so that state is steady,
+//              up to walls and the free surface, without the gradient pass. The linear EOS's
+//              hydrostatic state has d rho/dz = -rho g / c0^2 (dp = c0^2 d rho = -rho g dz), so
+//                rho^H_j - rho^H_i = rho_ij g.(x_j - x_i) / c0^2 = -rho_ij k.r_ij,
+//              k = g / c0^2, rho_ij = (rho_i + rho_j)/2 (the trapezoid rule of the exponential
+//              profile: exact to O(|k.r|^3)). The paper (and DualSPHysics) takes rho0 for
+//              rho_ij, which keeps a profile of slope rho0 g / c0^2 steady instead: against
+//              the momentum equation's rho g / c0^2, that mismatch set a steady pressure
+//              error of 2.1 % of rho0 g H in the hydrostatic tank at t = 1 s (0.36 % with
+//              rho_ij; Antuono 0.28 %). For Tait
+//              the same form is first order (c^2 = c0^2 at rho0).
+//              DualSPHysics offers the Molteni and Fourtakas terms (DensityDT 1 and 2), both
+//              without a gradient pass.
+template <int D>
+struct DensityDiffusion {
+  Real delta_h_c0 = 0;                  // delta h c0; 0: no diffusive term
+  const Vec<D>* grad_rho = nullptr;     // antuono: <grad rho>^L of every particle
+  Vec<D> hydrostatic = Vec<D>::Zero();  // fourtakas: k = g / c0^2; zero otherwise
+};
+
+// Density rate of the continuity equation with the delta-SPH term (above). Per pair, with
+// f = f_ij (grad_i W_ij = f r_ij):
 //   d = f (u_i - u_j).r_ij: under i <-> j, f (u_j - u_i).r_ji = d (symmetric);
-//   q = f psi_ij.r_ij = f [-2 (rho_j - rho_i) - (<grad rho>_i + <grad rho>_j).r_ij]:
-//       under i <-> j, f [-2 (rho_i - rho_j) - (<grad rho>_j + <grad rho>_i).r_ji] = -q;
-//   drho_i += V_j (rho_i d + delta h c0 q),  drho_j += V_i (rho_j d - delta h c0 q).
+//   q = delta h c0 f [-2 (rho_j - rho_i + rho_ij k.r_ij) - (<grad rho>_i + <grad rho>_j).r_ij]:
+//       under i <-> j, f [-2 (rho_i - rho_j + rho_ij k.r_ji) - (<grad rho>_j + <grad rho>_i).r_ji]
+//       = -q;
+//   drho_i += V_j (rho_i d + q),  drho_j += V_i (rho_j d - q).
 // `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
 // computed (computed_count; -1: all).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
-                     Index owned = -1) {
+                     const DensityDiffusion<D>& diffusion, PairFactors<D>& pf, Index owned = -1) {
   const Index n = computed_count(P, owned);
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
-  const Vec<D>* G = grad_rho ? grad_rho->data() : nullptr;
+  const Vec<D>* G = diffusion.grad_rho;
+  const Real dhc = diffusion.delta_h_c0;
+  const Vec<D> k = diffusion.hydrostatic;
   parallel_for(n, [&](Index i) { P.drho[i] = 0; });
   cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
     if (i >= n && j >= n) return;
     const Real f = W.gradient_factor(std::sqrt(r2));
     const Real d = f * (P.v[i] - P.v[j]).dot(r);
-    const Real q = G ? delta_h_c0 * f * (-2 * (P.rho[j] - P.rho[i]) - (G[i] + G[j]).dot(r)) : 0;
+    Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
+    if (G) psi_r -= (G[i] + G[j]).dot(r);
+    const Real q = dhc * f * psi_r;
     if (i < n) P.drho[i] += V[j] * (P.rho[i] * d + q);
     if (j < n) P.drho[j] += V[i] * (P.rho[j] * d - q);
   });
+}
+
+// The Antuono form: grad_rho is the renormalised gradient, or nullptr for the plain density
+// difference (Molteni) or delta = 0.
+template <int D>
+void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                     Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
+                     Index owned = -1) {
+  const DensityDiffusion<D> diffusion{delta_h_c0, grad_rho ? grad_rho->data() : nullptr,
+                                      Vec<D>::Zero()};
+  continuity_rate(P, cells, W, diffusion, pf, owned);
 }
 
 template <int D>

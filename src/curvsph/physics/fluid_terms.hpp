@@ -15,7 +15,15 @@ struct FluidParams {
   Vec<D> gravity = Vec<D>::Zero();
   bool drive = false;  // Vela Vela eq. 36: dv/dt = (v0 - v_x)/tau x
   Real drive_v0 = 0, drive_tau = 1;
-  Real delta_sph = 0;  // Antuono et al. delta (continuity path only)
+  Real delta_sph = 0;  // delta-SPH delta (continuity path only)
+  // The diffusive term's form (physics/density.hpp, DensityDiffusion).
+  enum class Diffusion { antuono, molteni, fourtakas } diffusion = Diffusion::antuono;
+  // Fourtakas' k = g / c0^2 (rho^H_j - rho^H_i = -rho_ij k.r_ij, physics/density.hpp); zero
+  // for the other forms.
+  Vec<D> hydrostatic_density_gradient() const {
+    if (diffusion != Diffusion::fourtakas) return Vec<D>::Zero();
+    return gravity / (eos.c0 * eos.c0);
+  }
 };
 
 }  // namespace curvsph

@@ -54,6 +54,18 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   F_.drive_tau = static_cast<Real>(c.drive_tau);
   continuity_ = c.density.method == DensitySpec::Method::continuity;
   F_.delta_sph = continuity_ ? static_cast<Real>(c.density.delta_sph) : 0;
+  F_.diffusion = c.density.diffusion == DensitySpec::Diffusion::antuono
+                     ? FluidParams<D>::Diffusion::antuono
+                 : c.density.diffusion == DensitySpec::Diffusion::molteni
+                     ? FluidParams<D>::Diffusion::molteni
+                     : FluidParams<D>::Diffusion::fourtakas;
+  for (int d = 0; d < D; ++d)
+    if (F_.diffusion == FluidParams<D>::Diffusion::fourtakas && c.periodic[d] && F_.gravity[d] != 0)
+      throw InputError(c.file_name(), "density.diffusion_term",
+                       "fourtakas takes gravity as a hydrostatic load, but gravity has a "
+                       "component along the periodic axis " +
+                           std::to_string(d) +
+                           " (a body force that drives a periodic flow: use antuono or molteni)");
 
   Vec3d lo = c.domain_min, hi = c.domain_max;
   for (int d = 0; d < D; ++d)
@@ -154,13 +166,14 @@ void Solver<D>::compute_rates(Real dt_rho) {
       // with the half-step velocity, so the scheme stays symplectic for acoustic modes (a
       // density rate lagging half a step amplifies sound waves every step).
       if (dt_rho > 0) {
-        const bool delta = F_.delta_sph > 0;
-        if (delta) {
+        DensityDiffusion<D> diffusion{F_.delta_sph * W_.h * F_.eos.c0, nullptr,
+                                      F_.hydrostatic_density_gradient()};
+        if (F_.delta_sph > 0 && F_.diffusion == FluidParams<D>::Diffusion::antuono) {
           renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, own);
           decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
+          diffusion.grad_rho = grad_rho_.data();
         }
-        continuity_rate(P_, cells_, W_, F_.delta_sph * W_.h * F_.eos.c0,
-                        delta ? &grad_rho_ : nullptr, pair_, own);
+        continuity_rate(P_, cells_, W_, diffusion, pair_, own);
         if (boundary_) boundary_->add_density_rate(P_);
         parallel_for(own, [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
       }

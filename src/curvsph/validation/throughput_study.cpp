@@ -2,6 +2,7 @@
 //  (a) the SPHERIC test 2 dam break (cases/dam_break_3d.yaml) at dx = 0.018 m with the kernel
 //      support matched to DualSPHysics' reference run (h/dx = 1.732), c0 = 45, CFL 0.2, for
 //      each boundary treatment (boundary integrals with geometric gamma, mirror ghosts, none);
+//      and with the Fourtakas density diffusion term (`_fourtakas`, no gradient pass);
 //  (b) the same at h/dx = 2 (boundary integrals);
 //  (c) a 3-D periodic box of 10^6 particles (cases/periodic_box_3d.yaml at dx = 0.01);
 //  (d) Couette flow (cases/couette.yaml) with density-preserving ghosts: the share of a step
@@ -114,6 +115,13 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
        dam_warmup,
        dam_steps,
        {2, 1}},
+      {"dam_break_fourtakas",
+       "dam_break_3d.yaml",
+       with(dam, {"resolution.h_over_dx=1.732", "density.diffusion_term=fourtakas"}),
+       false,
+       dam_warmup,
+       dam_steps,
+       {2, 1}},
       {"dam_break_ghost",
        "dam_break_3d.yaml",
        with(dam, {"resolution.h_over_dx=1.732", "boundary.method=ghost", "boundary.map=mirror",
@@ -220,6 +228,15 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
   // projections, which every Shepard mode pays (gamma = 1 included): reported beside it.
   r.metrics["shepard_share"] = share(d2, d2.phases.shepard);
   r.metrics["bi_prepass_share"] = share(d2, d2.phases.boundary_prepass);
+  // The same run with DualSPHysics' kind of density diffusion (no gradient pass; see
+  // density.hpp, DensityDiffusion): the like-for-like comparison with the reference, beside
+  // figure (a), which keeps the dam-break case's own (Antuono) term.
+  const auto& f2 = find("dam_break_fourtakas", 2);
+  const auto& f1 = find("dam_break_fourtakas", 1);
+  r.metrics["dam_break_fourtakas_particle_steps_per_second_2t"] = f2.particle_steps_per_second;
+  r.metrics["dam_break_fourtakas_particle_steps_per_second_1t"] = f1.particle_steps_per_second;
+  r.metrics["dam_break_fourtakas_thread_scaling"] =
+      f2.particle_steps_per_second / f1.particle_steps_per_second;
   r.metrics["quick"] = ctx.quick ? 1 : 0;
 
   const std::string ref = "issue 7 (DualSPHysics 5.4 on this machine kind: 3.2-3.6e5 on 2 threads)";
@@ -238,6 +255,8 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
   row("boundary_prepass_share", "<= 0.15 (Couette, density_preserving)", prepass <= 0.15);
   row("shepard_share", "<= 0.05 (dam break, geometric)", shepard <= 0.05);
   row("bi_prepass_share", "reported (dam break: gamma + element pair search)", true);
+  row("dam_break_fourtakas_particle_steps_per_second_2t",
+      "reported (Fourtakas density diffusion, no gradient pass, as DualSPHysics' DDT)", true);
 
   run_plot_script(ctx, "plot_throughput.py", {ctx.out_dir.string()});
 
@@ -247,7 +266,10 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
         "ghosts or boundary elements, averaged over the timed steps), and the time split by "
         "phase. Dam break: cases/dam_break_3d.yaml at dx = 0.018 m, c0 = 45, CFL 0.2, probes "
         "and VTK off, h/dx = 1.732 (support matched to DualSPHysics' reference run) unless "
-        "named `_h2`; `_ghost` swaps the boundary integrals for mirror ghosts, `_fluid_only` "
+        "named `_h2`; `_fourtakas` replaces the case's delta-SPH term (Antuono et al.: "
+        "renormalised density gradient, a pass of its own) by Fourtakas et al.'s (2019), which "
+        "needs none, like DualSPHysics' density diffusion terms; `_ghost` swaps the boundary "
+        "integrals for mirror ghosts, `_fluid_only` "
         "drops the walls (fluid cost alone). `periodic_box_1e6`: cases/periodic_box_3d.yaml at "
         "dx = 0.01. `couette_density_preserving`: cases/couette.yaml with "
         "boundary.map=density_preserving.\n\n"

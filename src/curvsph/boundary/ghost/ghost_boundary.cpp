@@ -54,6 +54,9 @@ class GhostBoundary final : public BoundaryModel<D> {
   void add_density_rate(Particles<D>& P) override {
     if (G_.size() == 0) return;
     const Real delta_h_c0 = F_.delta_sph * W_.h * F_.eos.c0;
+    // Fourtakas' hydrostatic part is taken between i and the ghost's source, whose density
+    // the ghost carries: x_i - x_s = r + (x_g - x_s), both minimal-image separations.
+    const Vec<D> k = F_.hydrostatic_density_gradient();
     parallel_for(static_cast<Index>(P.size()), [&](Index i) {
       Real div = 0, diff = 0;
       cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
@@ -61,7 +64,8 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real f = W_.gradient_factor(std::sqrt(r2));
         const Real Vg = G_.beta[g] * P.mass[s] / P.rho[s];  // beta_g source volumes (above)
         div += Vg * f * (P.v[i] - G_.v[g]).dot(r);
-        diff += Vg * f * (-2 * (P.rho[s] - P.rho[i]));
+        diff +=
+            Vg * f * (-2 * (P.rho[s] - P.rho[i] + k.dot(r + cells_.separation(G_.x[g], P.x[s]))));
       });
       P.drho[i] += P.rho[i] * div + delta_h_c0 * diff;
     });

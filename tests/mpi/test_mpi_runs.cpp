@@ -126,6 +126,38 @@ TEST_F(MpiRun, TaylorGreenSameParticlesOn1And2And4Ranks) {
                    1e-12);
 }
 
+// The same case under the owner rule (every pair with an owned particle, halo 2h): same
+// particles, and about twice the midpoint rule's halo (2 layers per cut face against 1).
+TEST_F(MpiRun, TaylorGreenOwnerRuleSameAndTwiceTheMidpointHalo) {
+  const std::string args = kCases +
+                           "taylor_green_2d.yaml --set resolution.dx=0.02 --set "
+                           "time.max_steps=20 --set output.every=10";
+  same_on_1_2_4<2>(args + " --set parallel.halo_rule=owner", 1e-12);
+  const auto owner = nlohmann::json::parse(read(dir_ / "np2" / "metrics.json"));
+  EXPECT_EQ(owner["halo_rule_midpoint"].get<int>(), 0);
+  const fs::path mid = dir_ / "midpoint_np2";
+  ASSERT_EQ(run_ranks(2, "run " + args + " -q --out " + mid.string()), 0) << err_;
+  const auto m = nlohmann::json::parse(read(mid / "metrics.json"));
+  EXPECT_EQ(m["halo_rule_midpoint"].get<int>(), 1);
+  const double ratio = m["halo_fraction"].get<double>() / owner["halo_fraction"].get<double>();
+  EXPECT_GT(ratio, 0.35);
+  EXPECT_LT(ratio, 0.65);
+  RecordProperty("halo_ratio_midpoint_over_owner", std::to_string(ratio));
+}
+
+// 3-D periodic box, summation density, midpoint rule: cuts on two axes at 4 ranks, pairs whose
+// midpoint belongs to a rank that owns neither particle. Random relaxed positions: on the
+// case's lattice the uniform flow stays uniform and every acceleration is round-off.
+TEST_F(MpiRun, PeriodicBox3DMidpointSameOn1And2And4Ranks) {
+  same_on_1_2_4<3>(kCases +
+                       "periodic_box_3d.yaml --set resolution.dx=0.0625 --set time.max_steps=10 "
+                       "--set fluids.0.region.random=true --set setup.relax.max_steps=100 "
+                       "--set output.every=100 --set output.vtk=true",
+                   1e-12);
+  const auto m = nlohmann::json::parse(read(dir_ / "np4" / "metrics.json"));
+  EXPECT_EQ(m["halo_rule_midpoint"].get<int>(), 1);
+}
+
 // Ghost walls (rotating inner cylinder), summation density: ghosts of halo copies.
 TEST_F(MpiRun, CouetteSameParticlesOn1And2And4Ranks) {
   same_on_1_2_4<2>(kCases +

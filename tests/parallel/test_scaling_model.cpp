@@ -1,6 +1,7 @@
 // The scaling model's geometry against hand-computed volumes and counts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -59,6 +60,31 @@ TEST(ScalingModel, LatticeHaloMatchesSiteCount) {
   }
   // A slab cut on x only: 2 layers on each of its two faces at w = 2.6.
   EXPECT_NEAR(lattice_halo_fraction({63, 126, 126}, {true, false, false}, 2.6), 4.0 / 63, 1e-14);
+}
+
+// Brute force for the midpoint rule's halo: every site within w of the box reaching half a
+// spacing beyond the m^3 owned sites (the ORB box, cut midway between layers).
+TEST(ScalingModel, LatticeHaloFromTheOrbBoxMatchesSiteCount) {
+  for (const auto& [m, w] : {std::pair{10, 1.3}, std::pair{7, 2.2}, std::pair{12, 0.9}}) {
+    const int top = static_cast<int>(std::ceil(w + 0.5));
+    long count = 0;
+    for (int i = -top; i < m + top; ++i)
+      for (int j = -top; j < m + top; ++j)
+        for (int k = -top; k < m + top; ++k) {
+          // Distance from the site to [-0.5, m - 0.5] per axis.
+          auto gap = [&](int v) { return std::max({-0.5 - v, v - (m - 0.5), 0.0}); };
+          const double gi = gap(i), gj = gap(j), gk = gap(k);
+          const double r2 = gi * gi + gj * gj + gk * gk;
+          if (r2 > 0 && r2 < w * w) ++count;
+        }
+    const double md = m;
+    EXPECT_NEAR(lattice_halo_fraction({md, md, md}, {true, true, true}, w, 0.5),
+                static_cast<double>(count) / (md * md * md), 1e-14)
+        << "m = " << m << ", w = " << w;
+  }
+  // h = 1.3 dx: one layer per face, half the owner rule's two at 2h.
+  EXPECT_NEAR(lattice_halo_fraction({63, 126, 126}, {true, false, false}, 1.3, 0.5), 2.0 / 63,
+              1e-14);
 }
 
 TEST(ScalingModel, StepTimeAddsHaloComputeAndMessages) {

@@ -73,14 +73,16 @@ double cube_halo_fraction(double n, double dx, double w) {
 }
 
 namespace {
-// Positive integer k-tuples (k = 1, 2, 3) with squared length below w^2.
-double positive_points_within(int k, double w) {
-  const int top = static_cast<int>(std::ceil(w));
+// Positive integer k-tuples (k = 1, 2, 3), each entry less `offset`, with squared length
+// below w^2.
+double positive_points_within(int k, double w, double offset) {
+  const int top = static_cast<int>(std::ceil(w + offset));
   long c = 0;
   for (int a = 1; a <= top; ++a)
     for (int b = 1; b <= (k > 1 ? top : 1); ++b)
       for (int e = 1; e <= (k > 2 ? top : 1); ++e) {
-        const double r2 = a * a + (k > 1 ? b * b : 0) + (k > 2 ? e * e : 0);
+        const double da = a - offset, db = b - offset, de = e - offset;
+        const double r2 = da * da + (k > 1 ? db * db : 0) + (k > 2 ? de * de : 0);
         if (r2 < w * w) ++c;
       }
   return static_cast<double>(c);
@@ -88,7 +90,7 @@ double positive_points_within(int k, double w) {
 }  // namespace
 
 double lattice_halo_fraction(const std::array<double, 3>& m, const std::array<bool, 3>& cut,
-                             double w) {
+                             double w, double offset) {
   double halo = 0;
   for (int S = 1; S < 8; ++S) {
     double term = 1;
@@ -101,7 +103,7 @@ double lattice_halo_fraction(const std::array<double, 3>& m, const std::array<bo
       else
         term *= m[static_cast<std::size_t>(d)];
     }
-    if (term > 0) halo += term * positive_points_within(k, w);
+    if (term > 0) halo += term * positive_points_within(k, w, offset);
   }
   return halo / (m[0] * m[1] * m[2]);
 }

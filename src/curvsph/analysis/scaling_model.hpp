@@ -39,8 +39,11 @@ double cube_halo_fraction(double n, double dx, double w);
 // box on exactly the axes of S, i.e. prod_{d not in S} m[d] * 2^|S| * N_|S|(w), with N_k(w)
 // the positive integer k-tuples of squared length below w^2. For w = 2.6: 2 layers per face
 // (N_1 = 2) where the continuum counts 2.6.
+// `offset`: the halo is measured from a box reaching `offset` spacings beyond the outer owned
+// layer on the cut axes (0.5 for the ORB box of the midpoint rule, whose cut lies midway
+// between two layers); a site k layers out is then k - offset from it.
 double lattice_halo_fraction(const std::array<double, 3>& m, const std::array<bool, 3>& cut,
-                             double w);
+                             double w, double offset = 0);
 
 // Ranks whose box lies within w of rank r's box (periodic), r excluded.
 int neighbour_count(const std::vector<RankBox>& boxes, int r, double w, double L);

@@ -397,9 +397,13 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
 
   // MPI domain decomposition (issue 8); ignored on one rank.
   const Keys par = top.sub("parallel");
-  par.allow({"rebalance_imbalance", "check_conservation"});
+  par.allow({"rebalance_imbalance", "check_conservation", "halo_rule"});
   c.rebalance_imbalance = par.positive("rebalance_imbalance", 0.1);
   c.check_conservation = par.boolean("check_conservation", false);
+  const std::string rule = par.choice("halo_rule", {"auto", "midpoint", "owner"}, "auto");
+  c.halo_rule = rule == "midpoint" ? Case::HaloRule::midpoint
+                : rule == "owner"  ? Case::HaloRule::owner
+                                   : Case::HaloRule::automatic;
 
   const Keys out = top.sub("output");
   out.allow({"every", "probe_every", "vtk"});

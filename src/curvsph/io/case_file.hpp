@@ -118,6 +118,10 @@ struct Case {
   // over the ranks after every migration (metrics: conservation_*).
   double rebalance_imbalance = 0.1;
   bool check_conservation = false;
+  // Which rank computes a pair of the fluid passes (parallel/pair_rule.hpp): `auto` is the
+  // midpoint rule (halo of h) unless walls or surface tension read the full 2h neighbourhood
+  // of owned particles, then the owner rule (halo of 2h).
+  enum class HaloRule { automatic, midpoint, owner } halo_rule = HaloRule::automatic;
   std::vector<ProbeSpec> probes;
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.
   std::string initial_field;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 namespace curvsph {
@@ -30,23 +31,16 @@ void Decomposition<D>::configure(const DecompositionOptions& o) {
   leave_.assign(P, {});
   boxes_.assign(P, Box{Vec<D>::Constant(-kInf), Vec<D>::Constant(kInf)});
   owned_bounds_ = boxes_;
-  tree_.assign(1, Node{});
-  tree_[0].rank = 0;
+  tree_ = OrbTree<D>{};
 }
 
 template <int D>
 int Decomposition<D>::owner(const Vec<D>& x) const {
-  int k = 0;
-  while (tree_[static_cast<std::size_t>(k)].rank < 0) {
-    const Node& n = tree_[static_cast<std::size_t>(k)];
-    k = n.child[x[n.axis] < n.cut ? 0 : 1];
-  }
-  return tree_[static_cast<std::size_t>(k)].rank;
+  return tree_.owner(x);
 }
 
 template <int D>
-Real Decomposition<D>::distance_to_owned(const Vec<D>& x, int rank) const {
-  const Box& b = owned_bounds_[static_cast<std::size_t>(rank)];
+Real Decomposition<D>::distance_to(const Vec<D>& x, const Box& b) const {
   Real d2 = 0;
   for (int d = 0; d < D; ++d) {
     auto gap = [&](Real v) { return std::max({b.lo[d] - v, v - b.hi[d], Real(0)}); };
@@ -59,6 +53,44 @@ Real Decomposition<D>::distance_to_owned(const Vec<D>& x, int rank) const {
     d2 += g * g;
   }
   return std::sqrt(d2);
+}
+
+template <int D>
+PairRule<D> Decomposition<D>::pair_rule(const CellList<D>& cells) {
+  PairRule<D> rule(owned_);
+  if (!midpoint()) return rule;
+  rule.tree = &tree_;
+  rule.cells = &cells;
+  rule.halo = this;
+  rule.rank = comm_.rank();
+  return rule;
+}
+
+template <int D>
+void Decomposition<D>::sum(Real* data, int per_particle) {
+  if (!active()) return;
+  const auto P = static_cast<std::size_t>(comm_.size());
+  const auto k = static_cast<std::size_t>(per_particle);
+  for (std::size_t r = 0; r < P; ++r) {
+    // The copies of rank r's particles go back to r, in the order r sent them.
+    const auto count = static_cast<std::size_t>(recv_count_[r]);
+    Real* copies = data + static_cast<std::size_t>(recv_begin_[r]) * k;
+    out_[r].resize(count * k * sizeof(Real));
+    if (count) std::memcpy(out_[r].data(), copies, count * k * sizeof(Real));
+    std::fill(copies, copies + count * k, Real(0));
+    in_[r].resize(send_[r].size() * k * sizeof(Real));
+  }
+  comm_.exchange(out_, in_, /*sizes_known=*/true);
+  Clock c{stats_.seconds};
+  std::vector<Real>& add = sum_buffer_;
+  for (std::size_t r = 0; r < P; ++r) {
+    const auto& idx = send_[r];
+    add.resize(idx.size() * k);
+    if (!idx.empty()) std::memcpy(add.data(), in_[r].data(), add.size() * sizeof(Real));
+    for (std::size_t t = 0; t < idx.size(); ++t)
+      for (std::size_t e = 0; e < k; ++e)
+        data[static_cast<std::size_t>(idx[t]) * k + e] += add[t * k + e];
+  }
 }
 
 // Every rank's bounding box of its owned particles, in one reduction (min of lo and of -hi;
@@ -90,7 +122,7 @@ template <int D>
 void Decomposition<D>::split(std::vector<int>& node_of, const Particles<D>& P, int node, Box region,
                              Box own, int rank_lo, int rank_hi) {
   if (rank_hi - rank_lo == 1) {
-    tree_[static_cast<std::size_t>(node)].rank = rank_lo;
+    tree_.nodes[static_cast<std::size_t>(node)].rank = rank_lo;
     boxes_[static_cast<std::size_t>(rank_lo)] = own;
     return;
   }
@@ -131,13 +163,13 @@ void Decomposition<D>::split(std::vector<int>& node_of, const Particles<D>& P, i
   below = static_cast<Real>(comm_.max(static_cast<double>(below)));
   above = static_cast<Real>(comm_.min(static_cast<double>(above)));
   const Real cut = std::isfinite(below) && std::isfinite(above) ? Real(0.5) * (below + above) : b;
-  Node& nd = tree_[static_cast<std::size_t>(node)];
+  Node& nd = tree_.nodes[static_cast<std::size_t>(node)];
   nd.axis = axis;
   nd.cut = cut;
-  const int left = static_cast<int>(tree_.size()), right = left + 1;
-  tree_[static_cast<std::size_t>(node)].child[0] = left;
-  tree_[static_cast<std::size_t>(node)].child[1] = right;
-  tree_.resize(tree_.size() + 2);
+  const int left = static_cast<int>(tree_.nodes.size()), right = left + 1;
+  tree_.nodes[static_cast<std::size_t>(node)].child[0] = left;
+  tree_.nodes[static_cast<std::size_t>(node)].child[1] = right;
+  tree_.nodes.resize(tree_.nodes.size() + 2);
   for (Index i = 0; i < n; ++i) {
     auto& k = node_of[static_cast<std::size_t>(i)];
     if (k == node) k = P.x[i][axis] < cut ? left : right;
@@ -168,7 +200,7 @@ void Decomposition<D>::bisect(const Particles<D>& P) {
     own.lo[d] = -kInf;
     own.hi[d] = kInf;
   }
-  tree_.assign(1, Node{});
+  tree_.nodes.assign(1, Node{});
   std::vector<int> node_of(static_cast<std::size_t>(owned_), 0);
   split(node_of, P, 0, region, own, 0, comm_.size());
 }
@@ -278,14 +310,16 @@ void Decomposition<D>::exchange_halo(Particles<D>& P) {
   owned_ = static_cast<Index>(P.size());
   if (!active()) return;
   const auto R = static_cast<std::size_t>(comm_.size());
-  gather_owned_bounds(P);
+  if (!o_.midpoint) gather_owned_bounds(P);  // the owner rule's halo reference
   {
     Clock c{stats_.seconds};
     for (auto& s : send_) s.clear();
+    // Midpoint rule: within h of the ORB box, where the midpoints of the receiver's pairs
+    // lie; owner rule: within 2h (or more) of the receiver's owned particles.
+    const std::vector<Box>& to = o_.midpoint ? boxes_ : owned_bounds_;
     for (Index i = 0; i < owned_; ++i)
       for (std::size_t r = 0; r < R; ++r)
-        if (static_cast<int>(r) != comm_.rank() &&
-            distance_to_owned(P.x[i], static_cast<int>(r)) < o_.halo_width)
+        if (static_cast<int>(r) != comm_.rank() && distance_to(P.x[i], to[r]) < o_.halo_width)
           send_[r].push_back(i);
     for (std::size_t r = 0; r < R; ++r) {
       out_[r].clear();

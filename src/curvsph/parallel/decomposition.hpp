@@ -17,12 +17,16 @@
 // the start of the next step. Halo copies keep their wrapped position; the local cell list
 // applies the periodic image itself, as it does for a rank's own particles.
 //
-// Halo width: a rank receives the particles within halo_width of the bounding box of its
-// owned particles (not of its ORB box, which may reach half a particle spacing, or on a
-// non-periodic outer side infinitely, beyond them): every particle within halo_width of an
-// owned particle, and no layer more. halo_width is the kernel support 2h (no Verlet skin:
-// the neighbour lists are rebuilt every step), widened where a pass reads neighbours of
-// neighbours (BoundaryModel::halo_reach, surface tension).
+// Halo width, by the pair rule of the passes (parallel/pair_rule.hpp):
+//   owner rule: a rank receives the particles within halo_width of the bounding box of its
+//     owned particles (not of its ORB box, which may reach half a particle spacing, or on a
+//     non-periodic outer side infinitely, beyond them): every particle within halo_width of
+//     an owned particle, and no layer more. halo_width is the kernel support 2h (no Verlet
+//     skin: the neighbour lists are rebuilt every step), widened where a pass reads
+//     neighbours of neighbours (BoundaryModel::halo_reach, surface tension);
+//   midpoint rule: the particles within halo_width = h of the rank's ORB box, where the
+//     midpoints of the pairs it computes lie; the passes' sums on halo copies go back to
+//     their owners through sum() (the HaloSum of the pair rule).
 //
 // Every call is collective (all ranks call it in the same order). On one rank every call
 // returns at once and the arrays are untouched: the serial solver is the same program.
@@ -33,11 +37,14 @@
 #include "curvsph/core/particles.hpp"
 #include "curvsph/parallel/communicator.hpp"
 #include "curvsph/parallel/field_pack.hpp"
+#include "curvsph/parallel/orb_tree.hpp"
+#include "curvsph/parallel/pair_rule.hpp"
 
 namespace curvsph {
 
 struct DecompositionOptions {
-  Real halo_width = 0;               // >= the kernel support 2h
+  Real halo_width = 0;               // owner rule: >= the kernel support 2h; midpoint: h
+  bool midpoint = false;             // the midpoint rule (parallel/pair_rule.hpp)
   double rebalance_imbalance = 0.1;  // re-bisect when max/mean owned count exceeds 1 + this
   bool check_conservation = false;   // count, mass and id sums checked after every migration
   Vec3d domain_min = Vec3d::Zero(), domain_max = Vec3d::Zero();
@@ -56,10 +63,18 @@ struct DecompositionStats {
 };
 
 template <int D>
-class Decomposition {
+class Decomposition final : public HaloSum {
  public:
   void configure(const DecompositionOptions& o);
   bool active() const { return comm_.size() > 1; }
+  bool midpoint() const { return active() && o_.midpoint; }
+  // The pair rule of the neighbour passes: the midpoint rule (through this decomposition's
+  // tree and halo) when configured on more than one rank, else the owner rule over the owned
+  // particles. `cells`: the fluid cell list (minimal image, wrap).
+  PairRule<D> pair_rule(const CellList<D>& cells);
+  // Adds the halo copies' entries of a per-particle array to their owners' and zeroes them
+  // (the reverse of update_halo; collective).
+  void sum(Real* data, int per_particle) override;
   const mpi::Comm& comm() const { return comm_; }
   Index owned() const { return owned_; }
 
@@ -91,12 +106,7 @@ class Decomposition {
   int owner(const Vec<D>& x) const;
 
  private:
-  struct Node {
-    int axis = 0;
-    Real cut = 0;
-    int child[2] = {-1, -1};
-    int rank = -1;  // leaf: the owning rank
-  };
+  using Node = typename OrbTree<D>::Node;
   struct Box {
     Vec<D> lo, hi;
   };
@@ -105,14 +115,13 @@ class Decomposition {
              int rank_lo, int rank_hi);
   void send_leavers(Particles<D>& P);
   void check_conservation(const Particles<D>& P);
-  // Distance from x to the bounding box of rank r's owned particles (periodic: nearest
-  // image); infinite for a rank that owns none.
-  Real distance_to_owned(const Vec<D>& x, int rank) const;
+  // Distance from x to box b (periodic: nearest image).
+  Real distance_to(const Vec<D>& x, const Box& b) const;
   void gather_owned_bounds(const Particles<D>& P);
 
   mpi::Comm comm_ = mpi::Comm::world();
   DecompositionOptions o_;
-  std::vector<Node> tree_;
+  OrbTree<D> tree_;
   std::vector<Box> boxes_;         // per rank: the ORB ownership boxes
   std::vector<Box> owned_bounds_;  // per rank: bounding box of its owned particles (halo)
   Index owned_ = 0;
@@ -124,6 +133,7 @@ class Decomposition {
   std::vector<std::vector<Index>> leave_;
   std::vector<std::size_t> keep_;
   std::vector<double> bounds_;
+  std::vector<Real> sum_buffer_;  // sum(): a message, aligned for Real
   std::int64_t count0_ = 0, id0_ = 0, id2_0_ = 0;
   double mass0_ = 0;
   DecompositionStats stats_;

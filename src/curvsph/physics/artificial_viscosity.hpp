@@ -20,33 +20,37 @@
 #include "curvsph/core/particles.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/parallel/pair_rule.hpp"
 
 namespace curvsph {
 
 // Adds the term to P.a (after the fluid pair forces); nothing when alpha_h_c0 = alpha h c0 is
-// 0 (the default: off). `rho0` per phase; `owned`: the particles computed (computed_count; -1:
-// all). Neighbours through the cell list's sorted copy of the positions: `cells` must have been
-// built from P.x as it is.
+// 0 (the default: off). `rho0` per phase; [mpi] `rule`: which pairs this rank computes and
+// which particles it completes (parallel/pair_rule.hpp). Neighbours through the cell list's sorted
+// copy of the positions: `cells` must have been built from P.x as it is.
 template <int D>
 void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                              Real alpha_h_c0, const std::vector<Real>& rho0, Index owned = -1) {
+                              Real alpha_h_c0, const std::vector<Real>& rho0,
+                              const PairRuleArg<D>& rule = {}) {
   if (alpha_h_c0 == 0) return;
-  const Index n = computed_count(P, owned);
+  const Index n = rule.computed(P);
+  // Under the midpoint rule the halo copies' entries of P.a are zero here (the force pass
+  // sent them to their owners): they collect this pass's part alone.
   const Real eta2 = Real(0.01) * W.h * W.h;
   // Each pair once (CellList::for_each_pair): with r = x_i - x_j and grad_i W_ij = f r,
   // pi_ji = pi_ij and grad_j W_ji = -f r, so j receives the same pair factor with the
-  // opposite sign, weighted by its own coefficient and i's volume. [mpi] A pair with a halo
-  // copy adds to the owned particle only; a pair of two halo copies is skipped.
+  // opposite sign, weighted by its own coefficient and i's volume.
   cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (i >= n && j >= n) return;
+    if (!rule.computes(P, n, i, j, r)) return;
     // (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
     const Real pf = W.gradient_factor(std::sqrt(r2)) * (P.v[i] - P.v[j]).dot(r) / (r2 + eta2);
     auto coef = [&](Index k) {
       return alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[k])] / P.rho[k];
     };
-    if (i < n) P.a[i] += (coef(i) * pf * P.mass[j] / P.rho[j]) * r;
-    if (j < n) P.a[j] -= (coef(j) * pf * P.mass[i] / P.rho[i]) * r;
+    if (rule.adds_to(i, n)) P.a[i] += (coef(i) * pf * P.mass[j] / P.rho[j]) * r;
+    if (rule.adds_to(j, n)) P.a[j] -= (coef(j) * pf * P.mass[i] / P.rho[i]) * r;
   });
+  rule.sum_halo(P.a);
 }
 
 }  // namespace curvsph

@@ -13,9 +13,10 @@
 // grad_j W_ji = -grad_i W_ij) written at the term. Neighbours come from the cell list's sorted
 // copy of the positions: `cells` must have been built from P.x as it is now, which the solver
 // guarantees (build_neighbors() right before the passes).
-// [mpi] Particles [0, n) with n = computed_count(P, owned) are computed; halo copies (>= n)
-// are neighbours only: a pair (owned, halo) adds to the owned one, a pair of two halo copies
-// is skipped (each rank computes the pairs its owned particles take part in).
+// [mpi] Every pass takes the pair rule of parallel/pair_rule.hpp (a plain `owned` count, or
+// nothing, is the owner rule): it completes the sums of particles [0, rule.computed(P)); halo
+// copies behind them are neighbours, or, under the midpoint rule, accumulate partial sums
+// that rule.sum_halo() sends to their owners before anything reads the result.
 #include <Eigen/LU>
 #include <array>
 #include <cmath>
@@ -25,24 +26,25 @@
 #include "curvsph/core/particles.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/parallel/pair_rule.hpp"
 #include "curvsph/physics/pair_factors.hpp"
 
 namespace curvsph {
 
 // sigma_i = W(0) + sum_{j != i} W_ij: the pair term W_ij is the same for i and j.
-// `owned`: the particles computed (computed_count; -1: all).
 template <int D>
 void density_summation(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                       Index owned = -1) {
-  const Index n = computed_count(P, owned);
-  const Real w0 = W.value(0);  // the particle itself
-  parallel_for(n, [&](Index i) { P.sigma[i] = w0; });
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>&, Real r2) {
-    if (i >= n && j >= n) return;
+                       const PairRuleArg<D>& rule = {}) {
+  const Index n = rule.computed(P);
+  const Real w0 = W.value(0);  // the particle itself (its owner adds it, not a halo copy)
+  parallel_for(rule.touched(P), [&](Index i) { P.sigma[i] = i < n ? w0 : 0; });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (!rule.computes(P, n, i, j, r)) return;
     const Real w = W.value(std::sqrt(r2));
-    if (i < n) P.sigma[i] += w;
-    if (j < n) P.sigma[j] += w;
+    if (rule.adds_to(i, n)) P.sigma[i] += w;
+    if (rule.adds_to(j, n)) P.sigma[j] += w;
   });
+  rule.sum_halo(P.sigma);
   parallel_for(n, [&](Index i) { P.rho[i] = P.mass[i] * P.sigma[i]; });
 }
 
@@ -54,42 +56,44 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
 // only the weight changes (V_j for i, V_i for j). M_i is symmetric: its D(D+1)/2 upper
 // entries are accumulated in pf.moment (scratch: 24 bytes a particle in 2-D, 48 in 3-D), g_i
 // in grad_rho itself.
-// `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
-// computed (computed_count; -1: all).
+// `pf` is the caller's reusable scratch (its volumes are filled here).
 template <int D>
 void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cells,
                                    const WendlandC2<D>& W, std::vector<Vec<D>>& grad_rho,
-                                   PairFactors<D>& pf, Index owned = -1) {
+                                   PairFactors<D>& pf, const PairRuleArg<D>& rule = {}) {
   constexpr int K = D * (D + 1) / 2;
-  const Index n = computed_count(P, owned);
+  const Index n = rule.computed(P);
+  const Index touched = rule.touched(P);
   grad_rho.resize(P.size());
   pf.fill_volume(P);
-  pf.moment.resize(static_cast<std::size_t>(n) * K);
+  pf.moment.resize(static_cast<std::size_t>(touched) * K);
   const Real* V = pf.volume.data();
   Real* A = pf.moment.data();  // A_i = sum_j V_j f_ij r_ij r_ij^T = -M_i, upper triangle
-  parallel_for(n, [&](Index i) {
+  parallel_for(touched, [&](Index i) {
     grad_rho[i] = Vec<D>::Zero();
     for (int k = 0; k < K; ++k) A[i * K + k] = 0;
   });
   cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (i >= n && j >= n) return;
+    if (!rule.computes(P, n, i, j, r)) return;
     const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
     const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
     std::array<Real, K> e;                                   // f r r^T, upper triangle
     int k = 0;
     for (int a = 0; a < D; ++a)
       for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
-    if (i < n) {
+    if (rule.adds_to(i, n)) {
       const Real Vj = V[j];
       grad_rho[i] += Vj * g;
       for (k = 0; k < K; ++k) A[i * K + k] += Vj * e[k];
     }
-    if (j < n) {
+    if (rule.adds_to(j, n)) {
       const Real Vi = V[i];
       grad_rho[j] += Vi * g;
       for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
     }
   });
+  rule.sum_halo(grad_rho);
+  if (rule.halo) rule.halo->sum(A, K);
   parallel_for(n, [&](Index i) {
     Mat<D> M;
     int k = 0;
@@ -145,28 +149,29 @@ struct DensityDiffusion {
 //       under i <-> j, f [-2 (rho_i - rho_j + rho_ij k.r_ji) - (<grad rho>_j + <grad rho>_i).r_ji]
 //       = -q;
 //   drho_i += V_j (rho_i d + q),  drho_j += V_i (rho_j d - q).
-// `pf` is the caller's reusable scratch (its volumes are filled here); `owned`: the particles
-// computed (computed_count; -1: all).
+// `pf` is the caller's reusable scratch (its volumes are filled here).
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                     const DensityDiffusion<D>& diffusion, PairFactors<D>& pf, Index owned = -1) {
-  const Index n = computed_count(P, owned);
+                     const DensityDiffusion<D>& diffusion, PairFactors<D>& pf,
+                     const PairRuleArg<D>& rule = {}) {
+  const Index n = rule.computed(P);
   pf.fill_volume(P);
   const Real* V = pf.volume.data();
   const Vec<D>* G = diffusion.grad_rho;
   const Real dhc = diffusion.delta_h_c0;
   const Vec<D> k = diffusion.hydrostatic;
-  parallel_for(n, [&](Index i) { P.drho[i] = 0; });
+  parallel_for(rule.touched(P), [&](Index i) { P.drho[i] = 0; });
   cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (i >= n && j >= n) return;
+    if (!rule.computes(P, n, i, j, r)) return;
     const Real f = W.gradient_factor(std::sqrt(r2));
     const Real d = f * (P.v[i] - P.v[j]).dot(r);
     Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
     if (G) psi_r -= (G[i] + G[j]).dot(r);
     const Real q = dhc * f * psi_r;
-    if (i < n) P.drho[i] += V[j] * (P.rho[i] * d + q);
-    if (j < n) P.drho[j] += V[i] * (P.rho[j] * d - q);
+    if (rule.adds_to(i, n)) P.drho[i] += V[j] * (P.rho[i] * d + q);
+    if (rule.adds_to(j, n)) P.drho[j] += V[i] * (P.rho[j] * d - q);
   });
+  rule.sum_halo(P.drho);
 }
 
 // The Antuono form: grad_rho is the renormalised gradient, or nullptr for the plain density
@@ -174,10 +179,10 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
 template <int D>
 void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                      Real delta_h_c0, const std::vector<Vec<D>>* grad_rho, PairFactors<D>& pf,
-                     Index owned = -1) {
+                     const PairRuleArg<D>& rule = {}) {
   const DensityDiffusion<D> diffusion{delta_h_c0, grad_rho ? grad_rho->data() : nullptr,
                                       Vec<D>::Zero()};
-  continuity_rate(P, cells, W, diffusion, pf, owned);
+  continuity_rate(P, cells, W, diffusion, pf, rule);
 }
 
 template <int D>

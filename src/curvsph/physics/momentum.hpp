@@ -13,6 +13,7 @@
 #include "curvsph/core/particles.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/parallel/pair_rule.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
 #include "curvsph/physics/pair_factors.hpp"
 
@@ -32,28 +33,28 @@ void update_pressure(Particles<D>& P, const FluidParams<D>& F) {
 //   u_j), m_i a_i += X_ij,  m_j a_j += X_ji = -X_ij
 // (r_ji = -r_ij, u_j - u_i = -(u_i - u_j), the bracketed factors and the harmonic mean mu_ij
 // are symmetric): pair forces are equal and opposite, momentum is conserved pair by pair.
-// `pf` is the caller's reusable scratch (filled here); `owned`: the particles computed
-// (computed_count; -1: all) — [mpi] a pair with a halo copy adds to the owned particle only,
-// a pair of two halo copies is skipped.
+// `pf` is the caller's reusable scratch (filled here); [mpi] `rule`: which pairs this rank
+// computes and which particles it completes (parallel/pair_rule.hpp).
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                  const FluidParams<D>& F, PairFactors<D>& pf, Index owned = -1) {
-  const Index n = computed_count(P, owned);
+                  const FluidParams<D>& F, PairFactors<D>& pf, const PairRuleArg<D>& rule = {}) {
+  const Index n = rule.computed(P);
   pf.fill_forces(P, F);
   const Real* inv_s2 = pf.inv_s2.data();
   const Real* p_s2 = pf.p_s2.data();
   const Real* mu = pf.mu.data();
-  parallel_for(n, [&](Index i) { P.a[i] = Vec<D>::Zero(); });
+  parallel_for(rule.touched(P), [&](Index i) { P.a[i] = Vec<D>::Zero(); });
   cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (i >= n && j >= n) return;
+    if (!rule.computes(P, n, i, j, r)) return;
     const Real f = W.gradient_factor(std::sqrt(r2));
     const Real mu_i = mu[i], mu_j = mu[j];
     const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
     const Vec<D> X =
         f * (mu_ij * (inv_s2[j] + inv_s2[i]) * (P.v[i] - P.v[j]) - (p_s2[j] + p_s2[i]) * r);
-    if (i < n) P.a[i] += X;
-    if (j < n) P.a[j] -= X;
+    if (rule.adds_to(i, n)) P.a[i] += X;
+    if (rule.adds_to(j, n)) P.a[j] -= X;
   });
+  rule.sum_halo(P.a);
   parallel_for(n, [&](Index i) { P.a[i] *= 1 / P.mass[i]; });
 }
 

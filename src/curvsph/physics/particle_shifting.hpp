@@ -7,54 +7,87 @@
 // acoustic noise into the fields. Without it, particles that meet at
 // a hyperbolic stagnation point (Taylor–Green) line up in ever more anisotropic rows; the SPH
 // divergence of a divergence-free field then drifts and the continuity density blows up.
+//
+// One symmetric pair pass (CellList::for_each_pair) accumulates the three sums. With
+// grad_i W_ij = f r_ij (r_ij = x_i - x_j) and grad_j W_ji = -f r_ij, per pair:
+//   s_i += c V_j f r,                s_j -= c V_i f r          (c = 1 + R (W_ij/W(dx))^n),
+//   g_i += V_j (rho_j - rho_i) f r,  g_j += V_i (rho_j - rho_i) f r,
+//   G_i += V_j (u_j - u_i) (f r)^T,  G_j += V_i (u_j - u_i) (f r)^T
+// ((rho_i - rho_j)(-f r) = (rho_j - rho_i) f r; likewise for u).
 #include <vector>
 
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/parallel/pair_rule.hpp"
 
 namespace curvsph {
 
+// The sums of the shift pass, per particle (the solver's reusable scratch).
+template <int D>
+struct ShiftScratch {
+  std::vector<Vec<D>> s, grad_rho;
+  std::vector<Mat<D>> grad_v;  // grad_v(a, b) = d v_a / d x_b
+  std::size_t bytes() const {
+    return (s.capacity() + grad_rho.capacity()) * sizeof(Vec<D>) +
+           grad_v.capacity() * sizeof(Mat<D>);
+  }
+};
+
+// Shifts particles [0, rule.computed(P)) and carries their density and velocity along;
+// [mpi] `rule`: which pairs this rank computes (parallel/pair_rule.hpp).
 template <int D>
 void shift_particles(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W, Real dx,
-                     Real coefficient, std::vector<Vec<D>>& shift, std::vector<Real>& drho,
-                     std::vector<Vec<D>>& dv, Index owned = -1) {
-  // `owned`: the particles shifted (computed_count; -1: all).
-  const Index n = computed_count(P, owned);
-  shift.resize(P.size());
-  drho.resize(P.size());
-  dv.resize(P.size());
+                     Real coefficient, ShiftScratch<D>& scratch, const PairRuleArg<D>& rule = {}) {
+  const Index n = rule.computed(P);
+  auto& S = scratch.s;
+  auto& G = scratch.grad_rho;
+  auto& Gv = scratch.grad_v;
+  S.resize(P.size());
+  G.resize(P.size());
+  Gv.resize(P.size());
   const Real w_dx = W.value(dx);
   const Real scale = coefficient * 4 * W.h * W.h;
   const Real cap = Real(0.1) * dx;
-  parallel_for(n, [&](Index i) {
-    Vec<D> s = Vec<D>::Zero();
-    Vec<D> grad_rho = Vec<D>::Zero();
-    Mat<D> grad_v = Mat<D>::Zero();  // grad_v(a, b) = d v_a / d x_b
-    cells.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
-      if (j == i) return;
-      const Real rr = std::sqrt(r2);
-      const Real ratio = W.value(rr) / w_dx;
-      const Real r4 = ratio * ratio * ratio * ratio;
-      const Vec<D> gradW = W.gradient_factor(rr) * r;
+  parallel_for(rule.touched(P), [&](Index i) {
+    S[i] = Vec<D>::Zero();
+    G[i] = Vec<D>::Zero();
+    Gv[i] = Mat<D>::Zero();
+  });
+  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+    if (!rule.computes(P, n, i, j, r)) return;
+    const Real rr = std::sqrt(r2);
+    const Real ratio = W.value(rr) / w_dx;
+    const Real r4 = ratio * ratio * ratio * ratio;
+    const Vec<D> gradW = W.gradient_factor(rr) * r;  // grad_i W_ij
+    const Real c = 1 + Real(0.2) * r4;
+    const Vec<D> g = (P.rho[j] - P.rho[i]) * gradW;
+    const Mat<D> gv = (P.v[j] - P.v[i]) * gradW.transpose();
+    if (rule.adds_to(i, n)) {
       const Real Vj = P.mass[j] / P.rho[j];
-      s += (1 + Real(0.2) * r4) * Vj * gradW;
-      grad_rho += Vj * (P.rho[j] - P.rho[i]) * gradW;
-      grad_v.noalias() += Vj * (P.v[j] - P.v[i]) * gradW.transpose();
-    });
-    Vec<D> d = -scale * s;
+      S[i] += c * Vj * gradW;
+      G[i] += Vj * g;
+      Gv[i].noalias() += Vj * gv;
+    }
+    if (rule.adds_to(j, n)) {
+      const Real Vi = P.mass[i] / P.rho[i];
+      S[j] -= c * Vi * gradW;
+      G[j] += Vi * g;
+      Gv[j].noalias() += Vi * gv;
+    }
+  });
+  rule.sum_halo(S);
+  rule.sum_halo(G);
+  rule.sum_halo(Gv);
+  parallel_for(n, [&](Index i) {
+    Vec<D> d = -scale * S[i];
     const Real len = d.norm();
     if (len > cap) d *= cap / len;
-    shift[i] = d;
-    drho[i] = grad_rho.dot(d);
-    dv[i] = grad_v * d;
-  });
-  parallel_for(n, [&](Index i) {
-    P.x[i] += shift[i];
+    P.x[i] += d;
     cells.wrap(P.x[i]);
-    P.rho[i] += drho[i];
-    P.v[i] += dv[i];
+    P.rho[i] += G[i].dot(d);
+    P.v[i] += Gv[i] * d;
   });
 }
 

@@ -87,6 +87,8 @@ void add_decomposition_metrics(const Decomposition<D>& dec, nlohmann::json& m) {
   const mpi::Comm& comm = dec.comm();
   const DecompositionStats& s = dec.stats();
   m["ranks"] = comm.size();
+  // 1: the fluid passes ran under the midpoint rule (halo of h), 0: the owner rule (2h).
+  m["halo_rule_midpoint"] = dec.midpoint() ? 1 : 0;
   // Max over mean owned count, averaged over the migrations (after each, before any
   // re-balance it triggers), and its largest value.
   m["load_imbalance"] = s.migrations ? s.imbalance_sum / static_cast<double>(s.migrations) : 1.0;

@@ -104,9 +104,19 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   // the boundary model reads further). Surface tension's curvature reads its neighbours'
   // colour normals, each a sum over their own neighbours (and images): twice the reach, so
   // that a halo copy's normal is complete where an owned particle reads it.
+  // The midpoint rule (a halo of h) serves the fluid pair passes only: the boundary models
+  // and surface tension read every neighbour of an owned particle and need the owner rule.
+  const bool full_reach = boundary_ || !c.surface_tension.empty();
+  if (c.halo_rule == Case::HaloRule::midpoint && full_reach)
+    throw InputError(c.file_name(), "parallel.halo_rule",
+                     "midpoint needs a case without walls and surface tension (they read the "
+                     "whole 2h neighbourhood of an owned particle); use auto or owner");
   DecompositionOptions dop;
-  dop.halo_width = W_.support * (boundary_ ? boundary_->halo_reach() : Real(1)) *
-                   (c.surface_tension.empty() ? Real(1) : Real(2));
+  dop.midpoint = c.halo_rule == Case::HaloRule::midpoint ||
+                 (c.halo_rule == Case::HaloRule::automatic && !full_reach);
+  dop.halo_width = dop.midpoint ? W_.h
+                                : W_.support * (boundary_ ? boundary_->halo_reach() : Real(1)) *
+                                      (c.surface_tension.empty() ? Real(1) : Real(2));
   dop.rebalance_imbalance = c.rebalance_imbalance;
   dop.check_conservation = c.check_conservation;
   dop.domain_min = c.domain_min;
@@ -156,9 +166,11 @@ void Solver<D>::compute_rates(Real dt_rho) {
     }
     mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
   }
-  // [mpi] The neighbour passes compute owned particles only (`own`); halo copies are
-  // neighbours whose fields come from their owners (exchange_halo, refresh, update_halo).
-  const Index own = decomp_.owned();
+  // [mpi] The fluid pair passes follow the decomposition's pair rule: owned particles only
+  // (owner rule), or the pairs whose midpoint this rank owns, halo sums sent to their owners
+  // (midpoint rule); halo copies' fields come from their owners (exchange_halo, refresh,
+  // update_halo).
+  const PairRule<D> rule = decomp_.pair_rule(cells_);
   {
     Stopwatch sw{times_.density};
     if (continuity_) {
@@ -169,16 +181,16 @@ void Solver<D>::compute_rates(Real dt_rho) {
         DensityDiffusion<D> diffusion{F_.delta_sph * W_.h * F_.eos.c0, nullptr,
                                       F_.hydrostatic_density_gradient()};
         if (F_.delta_sph > 0 && F_.diffusion == FluidParams<D>::Diffusion::antuono) {
-          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, own);
+          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, rule);
           decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
           diffusion.grad_rho = grad_rho_.data();
         }
-        continuity_rate(P_, cells_, W_, diffusion, pair_, own);
+        continuity_rate(P_, cells_, W_, diffusion, pair_, rule);
         if (boundary_) boundary_->add_density_rate(P_);
-        parallel_for(own, [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
+        parallel_for(decomp_.owned(), [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
       }
     } else {
-      density_summation(P_, cells_, W_, own);
+      density_summation(P_, cells_, W_, rule);
       if (boundary_) boundary_->add_density(P_);
     }
     update_pressure(P_, F_);
@@ -186,9 +198,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   {
     Stopwatch sw{times_.forces};
-    fluid_forces(P_, cells_, W_, F_, pair_, own);
+    fluid_forces(P_, cells_, W_, F_, pair_, rule);
     add_artificial_viscosity(P_, cells_, W_, Real(case_.artificial_alpha) * W_.h * F_.eos.c0,
-                             F_.rho0, own);
+                             F_.rho0, rule);
     if (!case_.surface_tension.empty()) {
       const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
                                             boundary_ ? boundary_->images() : WallImages<D>{},
@@ -231,8 +243,8 @@ std::size_t Solver<D>::bytes_held() const {
   auto held = [](const auto& v) {
     return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
   };
-  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + held(shift_) +
-         held(shift_dv_) + held(shift_drho_) + held(order_);
+  return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + shift_.bytes() +
+         held(order_);
 }
 
 template <int D>
@@ -277,7 +289,7 @@ void Solver<D>::step(Real dt_cap) {
     decomp_.update_halo(P_.v);  // [mpi] the kick above is right for owned particles only
     Stopwatch sw{times_.integrate};
     shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
-                    shift_, shift_drho_, shift_dv_, decomp_.owned());
+                    shift_, decomp_.pair_rule(cells_));
   }
   t_ += dt_;
   ++steps_;

@@ -14,6 +14,7 @@
 #include "curvsph/parallel/decomposition.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
 #include "curvsph/physics/pair_factors.hpp"
+#include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/relax.hpp"
 
@@ -93,8 +94,7 @@ class Solver {
   std::vector<Vec<D>> grad_rho_;
   PairFactors<D> pair_;  // per-particle factors of the pair sums, reused every step
   SurfaceTensionScratch<D> surface_scratch_;
-  std::vector<Vec<D>> shift_, shift_dv_;
-  std::vector<Real> shift_drho_;
+  ShiftScratch<D> shift_;
   std::vector<std::size_t> order_;
   // The time is accumulated in double even in the float build: in float, t + dt stops
   // advancing once dt falls below half an ulp of t (3e-8 at t = 0.35), and a step capped to

@@ -33,7 +33,7 @@ struct Measured {
 
 // Runs the case under mpirun (or directly on one rank without MPI) and reads metrics.json.
 nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
-                       const fs::path& out) {
+                       const fs::path& out, const std::string& extra = "") {
   const std::string self = fs::read_symlink("/proc/self/exe").string();
   std::string cmd;
 #ifdef CURVSPH_MPIEXEC
@@ -42,9 +42,9 @@ nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
 #endif
   cmd += fmt::format(
       "'{}' run '{}' -q --threads 1 --out '{}' --set resolution.dx={:.17g} --set "
-      "time.max_steps={} --set time.end=100 > '{}' 2>&1",
+      "time.max_steps={} --set time.end=100 {} > '{}' 2>&1",
       self, (ctx.source_dir / "cases" / "periodic_box_3d.yaml").string(), out.string(), 1.0 / cells,
-      steps, (out / "stdout.txt").string());
+      steps, extra, (out / "stdout.txt").string());
   fs::create_directories(out);
   setenv("OMP_WAIT_POLICY", "passive", 0);
   std::cerr << "scaling: " << ranks << " rank(s), " << cells << "^3 particles, " << steps
@@ -78,13 +78,19 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
       ctx.quick ? std::vector<std::pair<int, int>>{{1, 19}, {2, 24}, {4, 30}}
                 : std::vector<std::pair<int, int>>{{1, 37}, {2, 46}, {4, 58}};
   const std::vector<int> ranks = mpi ? std::vector<int>{1, 2, 4} : std::vector<int>{1};
-  const double h_over_dx = 1.3;          // the case's resolution.h_over_dx
-  const double w_cells = 2 * h_over_dx;  // halo width (kernel support) in units of dx
+  const double h_over_dx = 1.3;  // the case's resolution.h_over_dx
+  // Halo width in units of dx: h under the midpoint rule the case runs with (parallel.halo_rule
+  // auto, no walls); the owner rule's 2h for comparison.
+  const double w_cells = h_over_dx;
+  const double w_owner = 2 * h_over_dx;
+  // Lattice: the halo is measured from the ORB box, whose cut faces lie midway between two
+  // layers, half a spacing beyond the outer owned layer.
+  const double lattice_offset = 0.5;
 
   std::vector<Measured> runs;
   auto find = [&](int r, int cells) -> const Measured* {
     for (const auto& m : runs)
-      if (m.ranks == r && m.cells == cells) return &m;
+      if (m.ranks == r && m.cells == cells && m.kind != "strong_owner") return &m;
     return nullptr;
   };
   for (int r : ranks)
@@ -100,6 +106,11 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     runs.push_back({"weak", r, cells,
                     run_box(ctx, r, cells, steps, ctx.out_dir / fmt::format("weak_np{}", r))});
   }
+  // The owner rule on the strong-scaling case (2 ranks): what the midpoint rule saves.
+  if (mpi && ranks.back() >= 2)
+    runs.push_back({"strong_owner", 2, strong_cells,
+                    run_box(ctx, 2, strong_cells, steps, ctx.out_dir / "strong_owner_np2",
+                            "--set parallel.halo_rule=owner")});
   // A measured halo point at ~1e6 particles per rank: 2 ranks, 126^3 = 2.0e6 particles,
   // one step (the halo count is geometry; the step only proves it runs).
   const int halo_cells = 126;
@@ -115,14 +126,14 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     runs.push_back(
         {"cube", 8, cube_cells, run_box(ctx, 8, cube_cells, 1, ctx.out_dir / "cube_np8")});
   // The lattice form of the model for the ORB boxes of `ranks` over cells^3 sites.
-  auto lattice_model = [&](int ranks, int cells) {
+  auto lattice_model = [&](int ranks, int cells, double w, double offset) {
     double f = 0;
     const auto boxes = scaling::orb_boxes(ranks, 1.0);
     for (const auto& b : boxes) {
       std::array<double, 3> m{};
       for (int d = 0; d < 3; ++d)
         m[static_cast<std::size_t>(d)] = std::round((b.hi[d] - b.lo[d]) * cells);
-      f += scaling::lattice_halo_fraction(m, b.cut, w_cells);
+      f += scaling::lattice_halo_fraction(m, b.cut, w, offset);
     }
     return f / static_cast<double>(boxes.size());
   };
@@ -145,10 +156,14 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     const double loop = run.loop_seconds();
     const double comm = m.value("seconds_communication", 0.0);
     const auto boxes = scaling::orb_boxes(run.ranks, 1.0);
+    // The owner rule's halo: 2h from the owned particles' bounding box (lattice: no offset).
+    const bool owner = run.kind == "strong_owner";
+    const double w = owner ? w_owner : w_cells;
     double model_f = 0;
-    for (const auto& b : boxes) model_f += scaling::halo_fraction(b, w_cells / run.cells);
+    for (const auto& b : boxes) model_f += scaling::halo_fraction(b, w / run.cells);
     model_f /= static_cast<double>(boxes.size());
-    const double lattice_f = run.ranks > 1 ? lattice_model(run.ranks, run.cells) : 0.0;
+    const double lattice_f =
+        run.ranks > 1 ? lattice_model(run.ranks, run.cells, w, owner ? 0.0 : lattice_offset) : 0.0;
     const double msgs = m.value("messages", 0.0) / (st * run.ranks);
     const double bytes = m.value("bytes_sent", 0.0) / (st * run.ranks);
     csv << fmt::format(
@@ -181,6 +196,15 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     res.metrics[fmt::format("strong_efficiency_np{}", r)] = e;
     eff_text += fmt::format("- strong-scaling efficiency on {} ranks: {:.3f}\n", r, e);
     if (r == 2)
+      for (const auto& o : runs)
+        if (o.kind == "strong_owner") {
+          const double eo = o.m["particle_steps_per_second"].get<double>() /
+                            (2 * s1->m["particle_steps_per_second"].get<double>());
+          res.metrics["strong_owner_efficiency_np2"] = eo;
+          eff_text += fmt::format(
+              "- strong-scaling efficiency on 2 ranks with the owner rule (halo 2h): {:.3f}\n", eo);
+        }
+    if (r == 2)
       res.summary.push_back({"scaling.strong_efficiency_np2", e, ">= 0.8",
                              fmt::format("{} particles, 1 thread per rank, vs 1 rank",
                                          s1->m["particles"].get<long>()),
@@ -202,8 +226,9 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
   // message count of the largest run, bytes per halo particle from its bytes.
   scaling::StepModel model;
   model.rate = s1->m["particle_steps_per_second"].get<double>();
-  // A halo copy is in the cell list (and the per-particle factors) but in no pair sum: its
-  // cost is taken as the cell-list share of the 1-rank step.
+  // A halo copy is in the cell list (and the per-particle factors); the pair sums, each pair
+  // computed once by the rank owning its midpoint, split the 1-rank work: a halo copy's cost
+  // is taken as the cell-list share of the 1-rank step.
   model.halo_cost = s1->m.value("seconds_neighbors", 0.0) / s1->loop_seconds();
   const Measured* big = find(ranks.back(), strong_cells);
   if (ranks.back() > 1) {
@@ -267,7 +292,7 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
     const double f = hp->m["halo_fraction"].get<double>();
     const auto boxes = scaling::orb_boxes(2, 1.0);
     const double fm = scaling::halo_fraction(boxes[0], w_cells / halo_cells);
-    const double fl = lattice_model(2, halo_cells);
+    const double fl = lattice_model(2, halo_cells, w_cells, lattice_offset);
     res.metrics["measured_halo_fraction_1e6_per_rank_slab"] = f;
     res.metrics["model_halo_fraction_1e6_per_rank_slab"] = fm;
     res.metrics["lattice_model_halo_fraction_1e6_per_rank_slab"] = fl;
@@ -283,19 +308,22 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
   }
   const double cube_f = scaling::cube_halo_fraction(1e6, 1.0, w_cells);
   const double cube_lattice =
-      scaling::lattice_halo_fraction({100, 100, 100}, {true, true, true}, w_cells);
+      scaling::lattice_halo_fraction({100, 100, 100}, {true, true, true}, w_cells, lattice_offset);
+  const double cube_owner = scaling::cube_halo_fraction(1e6, 1.0, w_owner);
   res.metrics["model_cube_halo_fraction_1e6"] = cube_f;
   res.metrics["lattice_model_cube_halo_fraction_1e6"] = cube_lattice;
-  std::string cube_ref =
-      "cube sub-domain of 1e6 particles (interior rank, P >= 8), halo 2h = "
-      "2.6 dx, continuum";
+  res.metrics["model_cube_halo_fraction_1e6_owner_rule"] = cube_owner;
+  std::string cube_ref = fmt::format(
+      "cube sub-domain of 1e6 particles (interior rank, P >= 8), midpoint rule, halo h = "
+      "1.3 dx, continuum (owner rule, 2h: {:.4f})",
+      cube_owner);
   if (const Measured* cp = find(8, cube_cells)) {
     const double f = cp->m["halo_fraction"].get<double>();
     res.metrics["measured_halo_fraction_cube_np8"] = f;
     cube_ref += fmt::format(
         "; lattice {:.4f}; the measured 50^3 lattice cubes (8 ranks) {:.4f} vs lattice model "
         "{:.4f}",
-        cube_lattice, f, lattice_model(8, cube_cells));
+        cube_lattice, f, lattice_model(8, cube_cells, w_cells, lattice_offset));
   }
   res.summary.push_back(
       {"scaling.halo_fraction_cube_1e6_model", cube_f, "<= 0.15", cube_ref, cube_f <= 0.15});
@@ -308,7 +336,8 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# MPI scaling: strong, weak, communication, halo model\n\n"
      << "Case `cases/periodic_box_3d.yaml` (3-D periodic box, summation density, h = 1.3 dx, "
-        "halo width 2h), "
+        "halo width h under the midpoint rule of `parallel.halo_rule: auto`, "
+        "parallel/pair_rule.hpp), "
      << steps
      << " steps per run, one OpenMP thread per rank (`mpirun --oversubscribe -np N -x "
         "OMP_NUM_THREADS=1`). The machine these figures come from has 2 cores shared with other "
@@ -328,10 +357,11 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
      << eff_text << "\n"
      << "## Model\n\n"
      << "Per rank and step: t = n (1 + c f) / r + (e k + s (P - 1) + 5 log2 P) alpha + n f b / "
-        "beta. The pair passes compute owned particles only; a halo copy costs c = "
+        "beta. Each pair is computed once, by the rank that owns its midpoint, so the pair work "
+        "splits evenly; a halo copy costs c = "
      << fmt::format("{:.3f}", model.halo_cost)
-     << " of an owned particle (the cell-list share of the 1-rank step: it is in the cell list "
-        "and no pair sum); f: halo fraction of the ORB box (continuum), r = "
+     << " of an owned particle (the cell-list share of the 1-rank step: it is in the cell list); "
+        "f: halo fraction of the ORB box (continuum), r = "
      << fmt::format("{:.4g}", model.rate)
      << " particle-steps/s (1 rank, measured), e = " << fmt::format("{:.2f}", model.exchanges)
      << " exchanges per step and b = " << fmt::format("{:.1f}", model.bytes_per_halo)
@@ -345,13 +375,16 @@ StudyResult run_scaling_study(const StudyContext& ctx) {
      << mtable << "\n"
      << fmt::format(
             "Cube sub-domain of 1e6 particles: halo fraction {:.4f} in the continuum (6 w/a + "
-            "3 pi (w/a)^2 + 4 pi/3 (w/a)^3, a = 100 dx, w = 2.6 dx: a disordered fluid, which "
-            "fills its box up to the faces) and {:.4f} on the lattice (2 whole layers per face "
-            "within 2.6 dx of the outer owned layer, edges and corners by site count). The "
-            "halo is every particle within 2h of the bounding box of the receiving rank's "
-            "owned particles, the least that covers the kernel support of every owned particle "
-            "without a per-particle search.\n\n",
-            cube_f, cube_lattice)
+            "3 pi (w/a)^2 + 4 pi/3 (w/a)^3, a = 100 dx, w = h = 1.3 dx: a disordered fluid, "
+            "which fills its box up to the faces) and {:.4f} on the lattice (1 whole layer per "
+            "face within 1.3 dx of the ORB box's face, which lies half a spacing beyond the "
+            "outer owned layer; edges and corners by site count). Midpoint rule: a rank "
+            "computes the pairs whose midpoint lies in its ORB box and sends the halo copies' "
+            "sums to their owners, so it needs the particles within h of its box (both "
+            "particles of a pair are within h of its midpoint). The owner rule (every pair "
+            "with an owned particle, the walls' and surface tension's rule) needs every "
+            "particle within 2h of the owned ones: {:.4f} for the same cube.\n\n",
+            cube_f, cube_lattice, cube_owner)
      << "![scaling](scaling.png)\n\n"
      << summary_markdown(res.summary);
   return res;

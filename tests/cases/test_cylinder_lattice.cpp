@@ -11,6 +11,7 @@
 
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
+#include "curvsph/physics/eos.hpp"
 #include "curvsph/solver/solver.hpp"
 
 namespace curvsph {
@@ -41,6 +42,24 @@ TEST(CylinderLatticeCase, DensityPreservingRefusesSupportBeyondEq21) {
   // The mirror map has no such limit at this support (its ghosts stay inside up to d = r).
   EXPECT_NO_THROW(Solver<2>(
       read_case(kCase, {dx_override(1.002), "setup.relax.max_steps=1", "boundary.map=mirror"})));
+}
+
+// The background pressure keeps the Tait pressure >= 0 down to the lowest density the solver
+// admits (0.5 rho0): p(0.5 rho0) = B (0.5^7 - 1) + p0 >= 0 with B = rho0 c0^2 / gamma. A
+// particle in tension next to the obstacle is pulled onto it by its own ghosts (findings.md).
+TEST(CylinderLatticeCase, BackgroundPressureKeepsThePressurePositive) {
+  const Case c = read_case(kCase, {});
+  ASSERT_EQ(c.eos.type, EosSpec::Type::tait);
+  const double rho0 = c.fluids.at(0).rho0;
+  const double B = rho0 * c.eos.c0 * c.eos.c0 / c.eos.gamma;
+  EXPECT_GE(B * (std::pow(0.5, c.eos.gamma) - 1) + c.eos.p0, 0.0) << "p0 = " << c.eos.p0;
+  Eos eos;
+  eos.type = Eos::Type::tait;
+  eos.c0 = static_cast<Real>(c.eos.c0);
+  eos.gamma = static_cast<Real>(c.eos.gamma);
+  eos.p0 = static_cast<Real>(c.eos.p0);
+  EXPECT_NEAR(eos.pressure(static_cast<Real>(0.5 * rho0), static_cast<Real>(rho0)),
+              B * (std::pow(0.5, c.eos.gamma) - 1) + c.eos.p0, 1e-12 * B);
 }
 
 TEST(CylinderLatticeCase, ShortRunJustInsideTheLimitKeepsParticlesOut) {

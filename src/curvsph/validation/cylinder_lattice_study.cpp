@@ -26,6 +26,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/io/case_file.hpp"
+#include "curvsph/io/case_key.hpp"
 #include "curvsph/solver/run.hpp"
 #include "curvsph/validation/study.hpp"
 
@@ -60,9 +61,11 @@ LowRun make_run(const std::string& map, double v0, int seed) {
   return run;
 }
 
-// Cache key of one low-resolution run: the configuration that determines its result.
-std::string run_key(const std::string& map, double v0, int seed, double dx, double t_end) {
-  return fmt::format("{},{:.2f},{},{:.10g},{:.6g}", map, v0, seed, dx, t_end);
+// Cache key of one low-resolution run: the configuration that determines its result (the
+// case file's fingerprint covers everything else: EOS, viscosity, relaxation, ...).
+std::string run_key(const std::string& map, double v0, int seed, double dx, double t_end,
+                    const std::string& case_fingerprint) {
+  return fmt::format("{},{:.2f},{},{:.10g},{:.6g},{}", map, v0, seed, dx, t_end, case_fingerprint);
 }
 
 // Depth limit of the density-preserving map over the case's walls (Vela Vela eq. 21 for a
@@ -124,7 +127,8 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
     if (!ctx.quick || k == 1 || k == 15) v0s.push_back(0.05 * k);
   const double t_end10 = ctx.quick ? 1.0 : 10.0;
 
-  // Cached low-resolution runs of this configuration.
+  // Cached low-resolution runs of this configuration and this case file.
+  const std::string fingerprint = case_key(path);
   const auto runs_csv = ctx.out_dir / "tmax_runs.csv";
   std::map<std::string, LowRun> cached;
   {
@@ -135,7 +139,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       std::stringstream s(line);
       std::vector<std::string> f;
       for (std::string x; std::getline(s, x, ',');) f.push_back(x);
-      if (f.size() != 9) continue;  // an older layout: not reusable
+      if (f.size() != 10) continue;  // an older layout (no case key): not reusable
       LowRun run = make_run(f[0], std::stod(f[1]), std::stoi(f[2]));
       run.t_max = std::stod(f[5]);
       run.penetrations = std::stol(f[6]);
@@ -143,7 +147,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       run.particles = std::stol(f[8]);
       run.dx = std::stod(f[3]);
       run.done = true;
-      cached[run_key(run.map, run.v0, run.seed, std::stod(f[3]), std::stod(f[4]))] = run;
+      cached[run_key(run.map, run.v0, run.seed, std::stod(f[3]), std::stod(f[4]), f[9])] = run;
     }
   }
 
@@ -153,7 +157,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   for (int s = 1; s <= seeds; ++s)
     for (double v0 : v0s)
       for (const auto& var : variants) {
-        const auto it = cached.find(run_key(var.map, v0, s, var.dx, t_end10));
+        const auto it = cached.find(run_key(var.map, v0, s, var.dx, t_end10, fingerprint));
         LowRun run = it != cached.end() ? it->second : make_run(var.map, v0, s);
         run.label = var.label;
         run.dx = var.dx;
@@ -174,10 +178,11 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
     for (int m = 0; m < static_cast<int>(maps.size()); ++m) jobs.push_back({m, 0});
 
   // Rewrite the CSV with this configuration's cached rows; new rows are appended as they finish.
-  const std::string header = "map,v0,seed,dx,t_end,t_max,penetrations,blowup,particles\n";
+  const std::string header = "map,v0,seed,dx,t_end,t_max,penetrations,blowup,particles,case_key\n";
   auto csv_row = [&](const LowRun& run) {
-    return fmt::format("{},{:.2f},{},{:.10g},{:.6g},{:.4f},{},{},{}\n", run.map, run.v0, run.seed,
-                       run.dx, t_end10, run.t_max, run.penetrations, run.blowup, run.particles);
+    return fmt::format("{},{:.2f},{},{:.10g},{:.6g},{:.4f},{},{},{},{}\n", run.map, run.v0,
+                       run.seed, run.dx, t_end10, run.t_max, run.penetrations, run.blowup,
+                       run.particles, fingerprint);
   };
   {
     std::ofstream csv(runs_csv);
@@ -190,7 +195,8 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   std::vector<nlohmann::json> fig9(maps.size());
   std::size_t finished = 0;
   const auto fig9_dir = [&](int m) { return ctx.out_dir / ("fig9_" + maps[m]); };
-  const nlohmann::json fig9_config = {{"dx", dx9}, {"t_end", t_end9}, {"v0", 0.5}};
+  const nlohmann::json fig9_config = {
+      {"dx", dx9}, {"t_end", t_end9}, {"v0", 0.5}, {"case_key", fingerprint}};
   const int workers = ctx.threads > 0 ? ctx.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(workers)
   for (std::size_t j = 0; j < jobs.size(); ++j) {
@@ -377,10 +383,14 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   md << "# Flow through a lattice of cylinders (Vela Vela et al. §8, Figs. 9-10)\n\n"
      << "Case `cases/cylinder_lattice.yaml`: periodic [-0.5, 0.5]^2, obstacle r = 0.2, free "
         "slip, drive eq. 36 with tau = 1, rho0 = 1, nu = 0.01, Tait c0 = 7.5 (fixed for every "
-        "v0, see below), random initial positions relaxed with the walls active (500 steps, "
+        "v0, see below) and p0 = B = rho0 c0^2 / gamma = 8.036 (the pressure stays positive at "
+        "every density; with p0 = 2, used before 2026-11-25, a wake particle below "
+        "0.96 rho0 was in tension and its ghosts pulled it onto the obstacle: findings.md, the "
+        "p0 = 2 study in `p0_2/`), random initial positions relaxed with the walls active (500 "
+        "steps, "
         "same map as the run). Regenerate with `build/curvsph validate cylinder_lattice "
         "--threads 2 [--seeds K]` (default K = 20, the paper's; resumable: finished runs are "
-        "kept in `tmax_runs.csv` and reused)"
+        "kept in `tmax_runs.csv` and reused while the case file is unchanged)"
      << (ctx.quick ? " (this is a --quick run)" : "") << ".\n\n"
      << "## Fig. 9: v0 = 0.5, t_end = " << t_end9 << " (paper: 10)\n\n"
      << table9

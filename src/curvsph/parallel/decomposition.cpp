@@ -63,6 +63,16 @@ PairRule<D> Decomposition<D>::pair_rule(const CellList<D>& cells) {
   rule.cells = &cells;
   rule.halo = this;
   rule.rank = comm_.rank();
+  // The pair rule's shortcut for two owned particles (pair_rule.hpp); halo_width = h, so the
+  // kernel support is twice it.
+  const Box& mine = boxes_[static_cast<std::size_t>(comm_.rank())];
+  rule.owned_pairs_local = true;
+  for (int d = 0; d < D; ++d) {
+    if (!o_.periodic[static_cast<std::size_t>(d)]) continue;
+    const Real L = static_cast<Real>(o_.domain_max[d] - o_.domain_min[d]);
+    const Real extent = mine.hi[d] - mine.lo[d];
+    if (extent < L && L - extent < 2 * o_.halo_width) rule.owned_pairs_local = false;
+  }
   return rule;
 }
 

@@ -14,8 +14,9 @@
 //     J. Chem. Phys. 124, 184109).
 //
 // The midpoint must be the same bits on every rank that sees the pair, whichever order the
-// cell list hands i and j in: it is taken from the particle with the smaller id, through the
-// minimal-image separation (halo copies carry their owner's position bits).
+// cell list hands i and j in (halo copies carry their owner's position bits): (x_i + x_j)/2
+// without a periodic image, else from the particle with the smaller id through the
+// minimal-image separation.
 #include <type_traits>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct PairRule {
   const CellList<D>* cells = nullptr;  // the minimal image and the wrap of the midpoint
   HaloSum* halo = nullptr;
   int rank = 0;
+  // Every pair of two owned particles has its midpoint in this rank's box: on each periodic
+  // axis the box either spans the domain (a wrapped midpoint stays inside) or leaves at least
+  // the kernel support to the other ranks (no owned pair reaches across the seam).
+  bool owned_pairs_local = false;
 
   PairRule(Index owned_particles = -1) : owned(owned_particles) {}  // NOLINT: owner rule
 
@@ -59,11 +64,18 @@ struct PairRule {
   bool computes(const Particles<D>& P, Index n, Index i, Index j, const Vec<D>& r) const {
     if (!tree) return i < n || j < n;
     // Two owned particles without a periodic image between them: the midpoint lies in this
-    // rank's box, which is convex (and between the two positions to the last bit).
-    if (i < n && j < n && P.x[i] - P.x[j] == r) return true;
+    // rank's box, which is convex (and between the two positions to the last bit). Where no
+    // owned pair can reach across a periodic seam (owned_pairs_local), that holds for every
+    // owned pair and the positions need not be read.
+    if (i < n && j < n && (owned_pairs_local || P.x[i] - P.x[j] == r)) return true;
+    const Vec<D>& xi = P.x[i];
+    const Vec<D>& xj = P.x[j];
+    // Without a periodic image (r = x_i - x_j exactly) the midpoint (x_i + x_j)/2 is the same
+    // bits in either order; across a seam it is taken from the smaller id (rare).
+    if (xi - xj == r) return tree->owner(Real(0.5) * (xi + xj)) == rank;
     const bool i_first = P.id[i] < P.id[j];
-    const Vec<D>& a = P.x[i_first ? i : j];
-    const Vec<D>& b = P.x[i_first ? j : i];
+    const Vec<D>& a = i_first ? xi : xj;
+    const Vec<D>& b = i_first ? xj : xi;
     Vec<D> m = a - Real(0.5) * cells->separation(a, b);
     cells->wrap(m);
     return tree->owner(m) == rank;

@@ -12,12 +12,11 @@
 #include <vector>
 
 #include "../support/lattice.hpp"
-#include "curvsph/core/error.hpp"
+#include "../support/solver_refusal.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/parallel/pair_rule.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
-#include "curvsph/solver/solver.hpp"
 
 namespace curvsph {
 namespace {
@@ -212,15 +211,7 @@ fluids:
 eos: {type: linear, c0: 20}
 time: {end: 0.01}
 )";
-  auto refusal = [](const YAML::Node& root) -> std::string {
-    try {
-      const Case c = read_case(root, "case.yaml");
-      Solver<2> s(c);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
+  auto refusal = [](const YAML::Node& root) { return test::solver_refusal<2>(root); };
   YAML::Node r = YAML::Load(text);
   EXPECT_EQ(read_case(r, "case.yaml").halo_rule, Case::HaloRule::automatic);
   r["parallel"] = YAML::Load("{halo_rule: midpoint}");

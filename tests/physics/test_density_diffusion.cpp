@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../support/lattice.hpp"
+#include "../support/solver_refusal.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/density.hpp"
@@ -149,13 +150,7 @@ time: {end: 0.01}
 }
 
 std::string refusal(const YAML::Node& root) {
-  try {
-    const Case c = read_case(root, "case.yaml");
-    Solver<2> s(c);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::solver_refusal<2>(root);
 }
 
 TEST(DensityDiffusion, CaseKeys) {

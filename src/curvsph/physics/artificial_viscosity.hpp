@@ -40,15 +40,18 @@ void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const W
   // Each pair once (CellList::for_each_pair): with r = x_i - x_j and grad_i W_ij = f r,
   // pi_ji = pi_ij and grad_j W_ji = -f r, so j receives the same pair factor with the
   // opposite sign, weighted by its own coefficient and i's volume.
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (!rule.computes(P, n, i, j, r)) return;
-    // (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
-    const Real pf = W.gradient_factor(std::sqrt(r2)) * (P.v[i] - P.v[j]).dot(r) / (r2 + eta2);
-    auto coef = [&](Index k) {
-      return alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[k])] / P.rho[k];
-    };
-    if (rule.adds_to(i, n)) P.a[i] += (coef(i) * pf * P.mass[j] / P.rho[j]) * r;
-    if (rule.adds_to(j, n)) P.a[j] -= (coef(j) * pf * P.mass[i] / P.rho[i]) * r;
+  rule.dispatch([&](auto midpoint) {
+    constexpr bool M = decltype(midpoint)::value;
+    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+      if (!rule.template computes<M>(P, n, i, j, r)) return;
+      // (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
+      const Real pf = W.gradient_factor(std::sqrt(r2)) * (P.v[i] - P.v[j]).dot(r) / (r2 + eta2);
+      auto coef = [&](Index k) {
+        return alpha_h_c0 * rho0[static_cast<std::size_t>(P.phase[k])] / P.rho[k];
+      };
+      if (rule.template adds_to<M>(i, n)) P.a[i] += (coef(i) * pf * P.mass[j] / P.rho[j]) * r;
+      if (rule.template adds_to<M>(j, n)) P.a[j] -= (coef(j) * pf * P.mass[i] / P.rho[i]) * r;
+    });
   });
   rule.sum_halo(P.a);
 }

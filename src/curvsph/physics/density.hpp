@@ -38,11 +38,14 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
   const Index n = rule.computed(P);
   const Real w0 = W.value(0);  // the particle itself (its owner adds it, not a halo copy)
   parallel_for(rule.touched(P), [&](Index i) { P.sigma[i] = i < n ? w0 : 0; });
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (!rule.computes(P, n, i, j, r)) return;
-    const Real w = W.value(std::sqrt(r2));
-    if (rule.adds_to(i, n)) P.sigma[i] += w;
-    if (rule.adds_to(j, n)) P.sigma[j] += w;
+  rule.dispatch([&](auto midpoint) {
+    constexpr bool M = decltype(midpoint)::value;
+    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+      if (!rule.template computes<M>(P, n, i, j, r)) return;
+      const Real w = W.value(std::sqrt(r2));
+      if (rule.template adds_to<M>(i, n)) P.sigma[i] += w;
+      if (rule.template adds_to<M>(j, n)) P.sigma[j] += w;
+    });
   });
   rule.sum_halo(P.sigma);
   parallel_for(n, [&](Index i) { P.rho[i] = P.mass[i] * P.sigma[i]; });
@@ -73,24 +76,27 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
     grad_rho[i] = Vec<D>::Zero();
     for (int k = 0; k < K; ++k) A[i * K + k] = 0;
   });
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (!rule.computes(P, n, i, j, r)) return;
-    const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
-    const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
-    std::array<Real, K> e;                                   // f r r^T, upper triangle
-    int k = 0;
-    for (int a = 0; a < D; ++a)
-      for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
-    if (rule.adds_to(i, n)) {
-      const Real Vj = V[j];
-      grad_rho[i] += Vj * g;
-      for (k = 0; k < K; ++k) A[i * K + k] += Vj * e[k];
-    }
-    if (rule.adds_to(j, n)) {
-      const Real Vi = V[i];
-      grad_rho[j] += Vi * g;
-      for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
-    }
+  rule.dispatch([&](auto midpoint) {
+    constexpr bool M = decltype(midpoint)::value;
+    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+      if (!rule.template computes<M>(P, n, i, j, r)) return;
+      const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
+      const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
+      std::array<Real, K> e;                                   // f r r^T, upper triangle
+      int k = 0;
+      for (int a = 0; a < D; ++a)
+        for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
+      if (rule.template adds_to<M>(i, n)) {
+        const Real Vj = V[j];
+        grad_rho[i] += Vj * g;
+        for (k = 0; k < K; ++k) A[i * K + k] += Vj * e[k];
+      }
+      if (rule.template adds_to<M>(j, n)) {
+        const Real Vi = V[i];
+        grad_rho[j] += Vi * g;
+        for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
+      }
+    });
   });
   rule.sum_halo(grad_rho);
   if (rule.halo) rule.halo->sum(A, K);
@@ -161,15 +167,18 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
   const Real dhc = diffusion.delta_h_c0;
   const Vec<D> k = diffusion.hydrostatic;
   parallel_for(rule.touched(P), [&](Index i) { P.drho[i] = 0; });
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (!rule.computes(P, n, i, j, r)) return;
-    const Real f = W.gradient_factor(std::sqrt(r2));
-    const Real d = f * (P.v[i] - P.v[j]).dot(r);
-    Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
-    if (G) psi_r -= (G[i] + G[j]).dot(r);
-    const Real q = dhc * f * psi_r;
-    if (rule.adds_to(i, n)) P.drho[i] += V[j] * (P.rho[i] * d + q);
-    if (rule.adds_to(j, n)) P.drho[j] += V[i] * (P.rho[j] * d - q);
+  rule.dispatch([&](auto midpoint) {
+    constexpr bool M = decltype(midpoint)::value;
+    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+      if (!rule.template computes<M>(P, n, i, j, r)) return;
+      const Real f = W.gradient_factor(std::sqrt(r2));
+      const Real d = f * (P.v[i] - P.v[j]).dot(r);
+      Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
+      if (G) psi_r -= (G[i] + G[j]).dot(r);
+      const Real q = dhc * f * psi_r;
+      if (rule.template adds_to<M>(i, n)) P.drho[i] += V[j] * (P.rho[i] * d + q);
+      if (rule.template adds_to<M>(j, n)) P.drho[j] += V[i] * (P.rho[j] * d - q);
+    });
   });
   rule.sum_halo(P.drho);
 }

@@ -55,27 +55,30 @@ void shift_particles(Particles<D>& P, const CellList<D>& cells, const WendlandC2
     G[i] = Vec<D>::Zero();
     Gv[i] = Mat<D>::Zero();
   });
-  cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-    if (!rule.computes(P, n, i, j, r)) return;
-    const Real rr = std::sqrt(r2);
-    const Real ratio = W.value(rr) / w_dx;
-    const Real r4 = ratio * ratio * ratio * ratio;
-    const Vec<D> gradW = W.gradient_factor(rr) * r;  // grad_i W_ij
-    const Real c = 1 + Real(0.2) * r4;
-    const Vec<D> g = (P.rho[j] - P.rho[i]) * gradW;
-    const Mat<D> gv = (P.v[j] - P.v[i]) * gradW.transpose();
-    if (rule.adds_to(i, n)) {
-      const Real Vj = P.mass[j] / P.rho[j];
-      S[i] += c * Vj * gradW;
-      G[i] += Vj * g;
-      Gv[i].noalias() += Vj * gv;
-    }
-    if (rule.adds_to(j, n)) {
-      const Real Vi = P.mass[i] / P.rho[i];
-      S[j] -= c * Vi * gradW;
-      G[j] += Vi * g;
-      Gv[j].noalias() += Vi * gv;
-    }
+  rule.dispatch([&](auto midpoint) {
+    constexpr bool M = decltype(midpoint)::value;
+    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
+      if (!rule.template computes<M>(P, n, i, j, r)) return;
+      const Real rr = std::sqrt(r2);
+      const Real ratio = W.value(rr) / w_dx;
+      const Real r4 = ratio * ratio * ratio * ratio;
+      const Vec<D> gradW = W.gradient_factor(rr) * r;  // grad_i W_ij
+      const Real c = 1 + Real(0.2) * r4;
+      const Vec<D> g = (P.rho[j] - P.rho[i]) * gradW;
+      const Mat<D> gv = (P.v[j] - P.v[i]) * gradW.transpose();
+      if (rule.template adds_to<M>(i, n)) {
+        const Real Vj = P.mass[j] / P.rho[j];
+        S[i] += c * Vj * gradW;
+        G[i] += Vj * g;
+        Gv[i].noalias() += Vj * gv;
+      }
+      if (rule.template adds_to<M>(j, n)) {
+        const Real Vi = P.mass[i] / P.rho[i];
+        S[j] -= c * Vi * gradW;
+        G[j] += Vi * g;
+        Gv[j].noalias() += Vi * gv;
+      }
+    });
   });
   rule.sum_halo(S);
   rule.sum_halo(G);

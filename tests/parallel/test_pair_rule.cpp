@@ -100,7 +100,7 @@ void midpoint_rule_partitions_the_pairs(int n_side) {
     rule.rank = r;
     const Index n = rule.computed(Q);
     cells.for_each_pair([&](Index i, Index j, const Vec<D>& rij, Real) {
-      if (!rule.computes(Q, n, i, j, rij)) return;
+      if (!rule.template computes<true>(Q, n, i, j, rij)) return;
       const auto key = std::minmax(Q.id[i], Q.id[j]);
       const std::lock_guard<std::mutex> lock(mutex);  // the pair loop runs on threads
       ++computed[{key.first, key.second}];

@@ -99,10 +99,6 @@ struct PairRule {
       return tree->owner(m) == rank;
     }
   }
-  // The same, choosing the rule at run time (tests).
-  bool computes(const Particles<D>& P, Index n, Index i, Index j, const Vec<D>& r) const {
-    return tree ? computes<true>(P, n, i, j, r) : computes<false>(P, n, i, j, r);
-  }
 
   // The halo copies' partial sums to their owners (midpoint rule; nothing otherwise).
   template <class T>

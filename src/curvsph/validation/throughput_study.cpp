@@ -19,6 +19,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 
 #include "curvsph/io/case_file.hpp"
@@ -88,6 +89,18 @@ Measurement measure(const Case& c, const std::string& name, int threads, int war
   m.bytes_held = static_cast<double>(solver.bytes_held());
   m.peak_rss_bytes = peak_rss_bytes();
   return m;
+}
+
+// How idle OpenMP threads wait (OMP_WAIT_POLICY, and libgomp's GOMP_SPINCOUNT): read by the
+// runtime before main(), so the study can only record it. It matters for thread scaling: a
+// step has ~30 parallel regions, and a thread that sleeps between them (passive) is woken by
+// the kernel each time, which on a VM costs a descheduled vCPU (docs/performance.md).
+std::string wait_policy() {
+  const char* policy = std::getenv("OMP_WAIT_POLICY");
+  const char* spin = std::getenv("GOMP_SPINCOUNT");
+  std::string s = policy ? policy : "unset (runtime default)";
+  if (spin) s += fmt::format(", GOMP_SPINCOUNT={}", spin);
+  return s;
 }
 
 double share(const Measurement& m, double seconds) {
@@ -238,6 +251,7 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
   r.metrics["dam_break_fourtakas_thread_scaling"] =
       f2.particle_steps_per_second / f1.particle_steps_per_second;
   r.metrics["quick"] = ctx.quick ? 1 : 0;
+  r.metrics["omp_wait_policy"] = wait_policy();
 
   const std::string ref = "issue 7 (DualSPHysics 5.4 on this machine kind: 3.2-3.6e5 on 2 threads)";
   auto row = [&](const std::string& k, const std::string& target, bool pass) {
@@ -273,8 +287,10 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
         "drops the walls (fluid cost alone). `periodic_box_1e6`: cases/periodic_box_3d.yaml at "
         "dx = 0.01. `couette_density_preserving`: cases/couette.yaml with "
         "boundary.map=density_preserving.\n\n"
-     << fmt::format("Timed steps: {} after {} warm-up steps (dam break){}.\n\n", dam_steps,
-                    dam_warmup, ctx.quick ? " — a `--quick` run" : "")
+     << fmt::format(
+            "Timed steps: {} after {} warm-up steps (dam break){}. OpenMP wait policy: "
+            "{}.\n\n",
+            dam_steps, dam_warmup, ctx.quick ? " — a `--quick` run" : "", wait_policy())
      << "Absolute rates depend on the machine and its load: the runs of this directory were "
         "taken on a shared 2-core machine (see docs/performance.md for the load at the time). "
         "Compare rows with each other, not with other machines.\n\n"

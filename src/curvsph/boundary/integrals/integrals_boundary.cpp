@@ -270,8 +270,13 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       for_each_element(x, [&](Index b, const Vec<D>& r, Real r2) {
         idx.push_back(static_cast<std::size_t>(b));
         shift.push_back(x - r - ex_[b]);
-        if (r2 < active2)
-          std::atomic_ref<unsigned char>(active_[b]).store(1, std::memory_order_relaxed);
+        if (r2 < active2) {
+          // Test before setting: some 30 particles see each element, and a store by both
+          // threads to the same cache line at every one of them bounces the line between the
+          // cores; a load leaves it shared once the flag is set.
+          std::atomic_ref<unsigned char> flag(active_[b]);
+          if (!flag.load(std::memory_order_relaxed)) flag.store(1, std::memory_order_relaxed);
+        }
         const Real w = W_.value(std::sqrt(r2));
         if (w != 0) buf.push_back({b, r, w});
       });

@@ -236,7 +236,7 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
   near_.resize(P.size());
   wall_dist_.resize(P.size());
   wall_normal_.resize(P.size());
-  pair_start_.resize(P.size() + 1);
+  pair_count_.resize(P.size());
   pair_local_.resize(P.size());
   pair_thread_.resize(P.size());
   active_.assign(ex_.size(), 0);
@@ -282,7 +282,7 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       });
       pair_local_[i] = first;
       pair_thread_[i] = thread;
-      pair_start_[i + 1] = static_cast<Index>(buf.size()) - first;  // count; prefix-summed below
+      pair_count_[i] = static_cast<Index>(buf.size()) - first;
       near_[i] = !idx.empty();
       if (near_[i]) {
         const WallPoint<D> wp = walls_.closest(x.template cast<double>());
@@ -343,22 +343,6 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
     }
 #pragma omp atomic
     shepard_seconds_ += gamma_seconds / omp_get_num_threads();
-    // Gather the thread buffers into pairs_ (particle order). The implicit barrier of the
-    // loop above has all counts in place.
-#pragma omp single
-    {
-      pair_start_[0] = 0;
-      for (Index i = 0; i < n; ++i) pair_start_[i + 1] += pair_start_[i];
-      pairs_.resize(static_cast<std::size_t>(pair_start_[n]));
-    }
-    // Every particle's pairs from the buffer of the thread that found them (all buffers are
-    // complete after the barrier of the single above).
-#pragma omp for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-      const std::vector<Pair>& from = thread_pairs_[static_cast<std::size_t>(pair_thread_[i])];
-      std::copy_n(from.begin() + pair_local_[i], pair_start_[i + 1] - pair_start_[i],
-                  pairs_.begin() + pair_start_[i]);
-    }
   }
   penetrated_.clear();
   for (Index i = 0; i < n; ++i)
@@ -375,7 +359,7 @@ void IntegralsBoundary<D>::add_density(Particles<D>& P) {
 
 template <int D>
 void IntegralsBoundary<D>::check_prepared(const Particles<D>& P) const {
-  if (pair_start_.size() != P.size() + 1)
+  if (pair_count_.size() != P.size())
     throw std::logic_error("IntegralsBoundary: prepare() must run on these particles first");
 }
 
@@ -384,8 +368,7 @@ void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
   check_prepared(P);
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     Real wall = 0;
-    for (Index k = pair_start_[i]; k < pair_start_[i + 1]; ++k) {
-      const Pair& q = pairs_[static_cast<std::size_t>(k)];
+    for (const Pair& q : pairs_of(i)) {
       wall += (P.v[i] - eu_[q.b]).dot(en_[q.b]) * q.w * ea_[q.b];
     }
     P.drho[i] = (P.drho[i] - P.rho[i] * wall) / gamma_[i];
@@ -419,8 +402,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     if (!near_[i]) return;
     const Real mu = F_.viscosity[P.phase[i]];
     Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
-    for (Index k = pair_start_[i]; k < pair_start_[i + 1]; ++k) {
-      const Pair& q = pairs_[static_cast<std::size_t>(k)];
+    for (const Pair& q : pairs_of(i)) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
       fp += (p_wall_[b] + P.p[i]) * wa * en_[b];

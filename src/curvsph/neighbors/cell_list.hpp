@@ -156,12 +156,16 @@ class CellList {
   // is fixed by the cell grid alone, the same for any thread count.
   template <class F>
   void for_each_pair(F&& f) const {
+    // One team for the four colours: the barrier after each colour is needed anyway, and a
+    // parallel region per colour would also wake the team four times (a sleeping thread's
+    // wake-up is what a passive OpenMP wait policy pays per region; docs/performance.md).
+#pragma omp parallel
     for (int colour = 0; colour < 4; ++colour) {
       // Tiles of one colour write disjoint particle sets (plan_tiles()); their order among
       // themselves does not change any particle's sum, so a dynamic schedule is safe.
       const std::vector<int>& tiles = tiles_of_colour_[colour];
       const int nt = static_cast<int>(tiles.size());
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp for schedule(dynamic, 1)
       for (int k = 0; k < nt; ++k) for_each_pair_in_tile(tiles[k], f);
     }
   }

@@ -156,9 +156,8 @@ class CellList {
   // is fixed by the cell grid alone, the same for any thread count.
   template <class F>
   void for_each_pair(F&& f) const {
-    // One team for the four colours: the barrier after each colour is needed anyway, and a
-    // parallel region per colour would also wake the team four times (a sleeping thread's
-    // wake-up is what a passive OpenMP wait policy pays per region; docs/performance.md).
+    // One team for the four colours, with the barrier after each colour that is needed
+    // anyway: three parallel regions fewer per pass (22 a dam-break step instead of 31).
 #pragma omp parallel
     for (int colour = 0; colour < 4; ++colour) {
       // Tiles of one colour write disjoint particle sets (plan_tiles()); their order among

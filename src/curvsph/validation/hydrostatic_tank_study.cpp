@@ -34,7 +34,7 @@ struct TankRun {
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   const auto case_path = ctx.source_dir / "cases" / "hydrostatic_tank.yaml";
   // The paper runs every case to t sqrt(g/H) = 20. On the 2 cores of the 2026-11-25 machine
-  // (about 2e6 particle-steps/s at N ~ 5e4, 2 threads) that is 4 min for N ~ 10^4, 26 min for
+  // (about 2e6 particle-steps/s at N ~ 5e4, 2 threads) that is 2.5 min for N ~ 10^4, 30 min for
   // N ~ 5 10^4 and 75 min for N ~ 10^5 at h/dx = 2 (more at h/dx = 3, 4: more neighbours), so
   // N ~ 10^4 (both modes) and 5 10^4 (geometric) run the paper's full time; the N ~ 5 10^4
   // volume run and the N ~ 10^5 runs are shortened (the README says which). Finished runs are
@@ -154,7 +154,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
      << table
      << "\nThe column 'asked' is the end time each run was given. N ~ 10^4 (both modes) and "
         "N ~ 5 10^4 (geometric) run the paper's t sqrt(g/H) = 20. **The other runs are "
-        "shortened** (26 min for N ~ 5 10^4, 75 min or more for N ~ 10^5 to 20 on the 2 cores "
+        "shortened** (30 min for N ~ 5 10^4, 75 min or more for N ~ 10^5 to 20 on the 2 cores "
         "this study was generated on): the N ~ 5 10^4 volume run to 2, the N ~ 10^5 runs "
         "(geometric only) to 2 at h/dx = 2, 1 at h/dx = 3 and 0.5 at h/dx = 4. A run asked for "
         "less than "

@@ -93,8 +93,9 @@ Measurement measure(const Case& c, const std::string& name, int threads, int war
 
 // How idle OpenMP threads wait (OMP_WAIT_POLICY, and libgomp's GOMP_SPINCOUNT): read by the
 // runtime before main(), so the study can only record it. It matters for thread scaling: a
-// step has ~30 parallel regions, and a thread that sleeps between them (passive) is woken by
-// the kernel each time, which on a VM costs a descheduled vCPU (docs/performance.md).
+// dam-break step has 22 parallel regions and more barriers, and a thread that sleeps at them
+// (passive) must be woken by the kernel each time, ~0.5 ms for a halted vCPU on the VM the
+// figures were taken on (docs/performance.md).
 std::string wait_policy() {
   const char* policy = std::getenv("OMP_WAIT_POLICY");
   const char* spin = std::getenv("GOMP_SPINCOUNT");

@@ -271,9 +271,9 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
         idx.push_back(static_cast<std::size_t>(b));
         shift.push_back(x - r - ex_[b]);
         if (r2 < active2) {
-          // Test before setting: some 30 particles see each element, and a store by both
-          // threads to the same cache line at every one of them bounces the line between the
-          // cores; a load leaves it shared once the flag is set.
+          // Test before setting: dozens of particles lie within 2h of each element, and a
+          // store by both threads to the same cache line for every one of them bounces the
+          // line between the cores; a load leaves it shared once the flag is set.
           std::atomic_ref<unsigned char> flag(active_[b]);
           if (!flag.load(std::memory_order_relaxed)) flag.store(1, std::memory_order_relaxed);
         }

@@ -87,9 +87,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   // are thread_pairs_[pair_thread_[i]][pair_local_[i] ..] (pair_count_[i] of them), in the
   // order the element cell list visits them, so every wall sum adds in the same order as a
   // fresh search would, for any schedule. (Gathering them into one array in particle order
-  // cost a copy of ~40 bytes a pair every step, 30 MB on the dam break at dx = 0.018, a
-  // memory-bound loop that scaled worst of the step with a second thread.) All buffers keep
-  // their capacity from step to step.
+  // cost a memory-bound copy of ~40 bytes a pair every step, 30 MB on the dam break at
+  // dx = 0.018; without it the pre-pass takes 10 % less time on one thread.) All buffers
+  // keep their capacity from step to step.
   struct Pair {
     Index b;   // element
     Vec<D> r;  // r_ib = x_i - x_b (periodic image applied)

@@ -37,8 +37,8 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   // (about 2e6 particle-steps/s at N ~ 5e4, 2 threads) that is 2.5 min for N ~ 10^4, 30 min for
   // N ~ 5 10^4 and 75 min for N ~ 10^5 at h/dx = 2 (more at h/dx = 3, 4: more neighbours), so
   // N ~ 10^4 and 5 10^4 run the paper's full time in both modes; the N ~ 10^5 runs are
-  // shortened (the README says which). Finished runs are
-  // reused (cached_run), so raising a tau_end here reruns only that run.
+  // shortened (the README says which). Finished runs are reused (cached_run), so raising a
+  // tau_end here reruns only that run.
   std::vector<TankRun> runs;
   if (ctx.quick) {
     runs = {{70, 2, "geometric", 2.0}, {70, 2, "volume", 2.0}};

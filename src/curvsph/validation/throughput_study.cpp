@@ -97,8 +97,17 @@ Measurement measure(const Case& c, const std::string& name, int threads, int war
 // dam-break step has 22 parallel regions and more barriers, and a thread that sleeps at them
 // (passive) must be woken by the kernel each time, ~0.5 ms for a halted vCPU on the VM the
 // figures were taken on (docs/performance.md).
+const char* wait_policy_env() {
+  return std::getenv("OMP_WAIT_POLICY");
+}
+
+bool wait_policy_is(const char* want) {
+  const char* v = wait_policy_env();
+  return v != nullptr && strcasecmp(v, want) == 0;
+}
+
 std::string wait_policy() {
-  const char* policy = std::getenv("OMP_WAIT_POLICY");
+  const char* policy = wait_policy_env();
   const char* spin = std::getenv("GOMP_SPINCOUNT");
   std::string s = policy ? policy : "unset (runtime default)";
   if (spin) s += fmt::format(", GOMP_SPINCOUNT={}", spin);
@@ -254,12 +263,8 @@ StudyResult run_throughput_study(const StudyContext& ctx) {
       f2.particle_steps_per_second / f1.particle_steps_per_second;
   r.metrics["quick"] = ctx.quick ? 1 : 0;
   // metrics.json holds numbers only (DESIGN.md): the policy as two flags, the text in README.
-  auto policy_is = [](const char* want) {
-    const char* v = std::getenv("OMP_WAIT_POLICY");
-    return v != nullptr && strcasecmp(v, want) == 0 ? 1 : 0;
-  };
-  r.metrics["omp_wait_policy_active"] = policy_is("active");
-  r.metrics["omp_wait_policy_passive"] = policy_is("passive");
+  r.metrics["omp_wait_policy_active"] = wait_policy_is("active") ? 1 : 0;
+  r.metrics["omp_wait_policy_passive"] = wait_policy_is("passive") ? 1 : 0;
 
   const std::string ref = "issue 7 (DualSPHysics 5.4 on this machine kind: 3.2-3.6e5 on 2 threads)";
   auto row = [&](const std::string& k, const std::string& target, bool pass) {

@@ -370,10 +370,13 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     bnd.fail(bnd.key("method"), "the case has walls; choose ghost or integrals");
 
   const Keys setup = top.sub("setup");
-  setup.allow({"random_seed", "relax"});
+  setup.allow({"random_seed", "jitter", "relax"});
   const long seed = setup.integer("random_seed", 1);
   if (seed < 0) setup.fail(setup.key("random_seed"), "must be >= 0");
   c.random_seed = static_cast<unsigned>(seed);
+  c.jitter = setup.number("jitter", 0.0);
+  if (!(c.jitter >= 0 && c.jitter < 0.5))
+    setup.fail(setup.key("jitter"), "must be in [0, 0.5) (a fraction of dx)");
   if (setup.has("relax")) {
     const Keys relax = setup.sub("relax");
     relax.allow({"max_steps", "tolerance", "map"});

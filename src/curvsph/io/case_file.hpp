@@ -105,6 +105,11 @@ struct Case {
   // 0: off, the default)
   double artificial_alpha = 0;
   unsigned random_seed = 1;
+  // setup.jitter: every lattice point moved by a uniform random offset of up to jitter dx per
+  // axis (setup.random_seed), 0 <= jitter < 0.5. A start that breaks the lattice's symmetry
+  // far above round-off, so that runs in float and double (or on other compilers) disorder
+  // alike instead of when their round-off first grows (docs/performance.md).
+  double jitter = 0;
   RelaxSpec relax;
   double t_end = 0;
   double cfl = 0.2;

@@ -177,6 +177,26 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
         all.push_back(p);
         ++kept;
       }
+    if (c.jitter > 0 && !c.fluids[f].region.random) {
+      // setup.jitter: a uniform offset of up to jitter dx per axis, wrapped on periodic axes;
+      // a point whose move would leave its region, come near a wall or enter a later fluid's
+      // region stays where it was (so the count and volumes are those of the lattice).
+      std::mt19937_64 rng(static_cast<std::uint64_t>(c.random_seed) * 104729u + 31u * f + 1u);
+      std::uniform_real_distribution<double> u(-c.jitter * c.dx, c.jitter * c.dx);
+      const bool bounded = c.fluids[f].region.kind != RegionSpec::Kind::inside_walls;
+      for (std::size_t q = all.size() - kept; q < all.size(); ++q) {
+        Vec3d x = all[q].x;
+        for (int d = 0; d < D; ++d) x[d] += u(rng);
+        if (bounded && !region_contains(c.fluids[f].region, D, x)) continue;
+        for (int d = 0; d < D; ++d)
+          if (c.has_domain && c.periodic[d]) {  // a region across the seam: its image
+            const double L = c.domain_max[d] - c.domain_min[d];
+            x[d] -= L * std::floor((x[d] - c.domain_min[d]) / L);
+          }
+        if (!(walls.empty() || wet(x)) || claimed_later(x)) continue;
+        all[q].x = x;
+      }
+    }
     if (c.fluids[f].region.random && kept > 0) {
       // Same count and volumes, uniformly random positions in the region (wet ones only).
       std::mt19937_64 rng(static_cast<std::uint64_t>(c.random_seed) * 7919u + f);

@@ -178,9 +178,9 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
         ++kept;
       }
     if (c.jitter > 0 && !c.fluids[f].region.random) {
-      // setup.jitter: a uniform offset of up to jitter dx per axis, wrapped on periodic axes;
-      // a point whose move would leave its region, come near a wall or enter a later fluid's
-      // region stays where it was (so the count and volumes are those of the lattice).
+      // setup.jitter: a uniform offset of up to jitter dx per axis; a point whose move would
+      // leave its region, come near a wall or enter a later fluid's region stays where it was
+      // (so the count and volumes are those of the lattice).
       std::mt19937_64 rng(static_cast<std::uint64_t>(c.random_seed) * 104729u + 31u * f + 1u);
       std::uniform_real_distribution<double> u(-c.jitter * c.dx, c.jitter * c.dx);
       const bool bounded = c.fluids[f].region.kind != RegionSpec::Kind::inside_walls;
@@ -188,11 +188,6 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
         Vec3d x = all[q].x;
         for (int d = 0; d < D; ++d) x[d] += u(rng);
         if (bounded && !region_contains(c.fluids[f].region, D, x)) continue;
-        for (int d = 0; d < D; ++d)
-          if (c.has_domain && c.periodic[d]) {  // a region across the seam: its image
-            const double L = c.domain_max[d] - c.domain_min[d];
-            x[d] -= L * std::floor((x[d] - c.domain_min[d]) / L);
-          }
         if (!(walls.empty() || wet(x)) || claimed_later(x)) continue;
         all[q].x = x;
       }
@@ -216,6 +211,15 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
                        "inside the regions of fluids listed after it)");
     phase.insert(phase.end(), kept, static_cast<int>(f));
   }
+  // A region that crosses a periodic seam (or a jittered point that did) holds points beyond
+  // the domain: each becomes its periodic image inside [min, max), where the cell list and
+  // the walls expect it.
+  for (auto& p : all)
+    for (int d = 0; d < D; ++d)
+      if (c.has_domain && c.periodic[d]) {
+        const double L = c.domain_max[d] - c.domain_min[d];
+        p.x[d] -= L * std::floor((p.x[d] - c.domain_min[d]) / L);
+      }
   P.resize(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     const FluidSpec& fl = c.fluids[phase[i]];

@@ -38,8 +38,8 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   // N ~ 5 10^4 and 75 min for N ~ 10^5 at h/dx = 2 (more at h/dx = 3, 4: more neighbours), so
   // every resolution at h/dx = 2 runs the paper's full time with geometric gamma, N ~ 10^4 and
   // 5 10^4 in volume mode too; the N ~ 10^5 runs at h/dx = 3 and 4 are shortened (the README
-  // says which). Finished runs are reused (cached_run), so raising a
-  // tau_end here reruns only that run.
+  // says which). Finished runs are reused (cached_run), so raising a tau_end here reruns only
+  // that run.
   std::vector<TankRun> runs;
   if (ctx.quick) {
     runs = {{70, 2, "geometric", 2.0}, {70, 2, "volume", 2.0}};

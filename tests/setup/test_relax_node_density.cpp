@@ -60,5 +60,38 @@ TEST(NodeDensity, DensityPreservingCloserToInteriorThanMirrorNearCircle) {
   EXPECT_DOUBLE_EQ(m["ghost_node_density_dev"].get<double>(), dp);  // the case's map
 }
 
+// Barker's Couette annulus (dx = 1.875 mm) from a lattice cut by the two circles and packed
+// with the walls active. The lattice drops the points within 0.3 dx of the walls, and the
+// packing spreads the rest over that strip: with masses rho0 dx^2 the fluid started 7.5 %
+// below rho0, in tension (Tait with p0 = 2.5 Pa), and particles went through a wall at
+// t = 0.24 s. With the packed volumes 1/n_i the summation density (the solver's own ghosts)
+// is rho0 at t = 0 and the run keeps every particle inside.
+TEST(Relax, PackedAnnulusStartsAtReferenceDensityAndStaysBetweenItsWalls) {
+  YAML::Node root = YAML::Load(R"(
+name: relax_annulus
+dimension: 2
+resolution: {dx: 1.875e-3, h_over_dx: 1.3}
+domain: {min: [-0.041, -0.041], max: [0.041, 0.041]}
+fluids:
+  - {name: water, rho0: 1000, viscosity: 1.0e-3, region: {inside_walls: true}}
+eos: {type: tait, c0: 0.25, gamma: 7, p0: 2.5}
+density: {method: summation}
+walls:
+  - {shape: circle, center: [0, 0], radius: 0.025, fluid: outside,
+     motion: {rotate: {omega: 1.0, center: [0, 0]}}}
+  - {shape: circle, center: [0, 0], radius: 0.040, fluid: inside}
+boundary: {method: ghost, map: mirror_beta, velocity: no_slip}
+setup: {relax: {max_steps: 3000, tolerance: 1.0e-4}}
+time: {end: 0.5, cfl: 0.2}
+output: {vtk: false}
+analysis: {couette: {}}
+)");
+  const auto m = run_quiet(read_case(root, "relax_annulus.yaml"));
+  EXPECT_LT(m["relax_node_density_spread"].get<double>(), 0.01);
+  EXPECT_LT(m["density_error_t0"].get<double>(), 1e-12);
+  EXPECT_EQ(m["unstable"].get<int>(), 0);
+  EXPECT_DOUBLE_EQ(m["time_reached"].get<double>(), 0.5);
+}
+
 }  // namespace
 }  // namespace curvsph

@@ -87,7 +87,10 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
     if (step == 0) res.spread_initial = spread;
     res.spread = spread;
     res.steps = step;
-    if (spread < opt.tolerance || step >= opt.max_steps) break;
+    if (spread < opt.tolerance || step >= opt.max_steps) {
+      res.node_density = nd;
+      break;
+    }
     double mean = 0;
     for (Real v : nd) mean += v;
     mean /= std::max<Index>(n, 1);

@@ -39,6 +39,7 @@ struct RelaxResult {
   double spread_initial = 0;  // before the first step
   double spread = 0;          // at the final positions
   double seconds = 0;
+  std::vector<Real> node_density;  // n_i at the final positions (fluid and ghosts)
 };
 
 // n at each point of `at` from the fluid points xf (cell list cf, built over xf) and the

@@ -1,6 +1,6 @@
 """Plots of `curvsph validate couette` (Barker & Neethling Figs. 1-4).
 
-Usage: plot_couette.py OUT_DIR PLOT_DX_MM REST_DX_MM
+Usage: plot_couette.py OUT_DIR PLOT_DX_MM REST_DX_MM [MU_CONTROL]
 Reads OUT_DIR/couette.csv and the per-run CSVs under OUT_DIR/runs/.
 """
 import csv
@@ -45,6 +45,7 @@ def density_plot(out, what, dx, fname, title):
 
 def main():
     out, dx, rest_dx = sys.argv[1], sys.argv[2], sys.argv[3]
+    mu_control = sys.argv[4] if len(sys.argv) > 4 else None
     density_plot(out, "t0", dx, "t0", f"Hydrostatic density at t = 0, dx = {dx} mm (Barker Fig. 1)")
     density_plot(out, "hydro", dx, "end",
                  f"Hydrostatic density at the end of the run, dx = {dx} mm (Barker Fig. 2)")
@@ -64,20 +65,53 @@ def main():
     fig.savefig(os.path.join(out, "error_vs_time.png"), dpi=120)
     plt.close(fig)
 
+    # C and E: from rest, Barker's mu (solid) and the control mu (thin).
+    runs = [("rest", "1e-3", 1.6)]
+    if mu_control:
+        runs.append((f"rest_mu{mu_control}", mu_control, 0.8))
     fig, ax = plt.subplots(figsize=(6, 4))
-    for m in ["mirror", "mirror_beta"]:
-        p = os.path.join(out, "runs", f"rest_{m}_dx{rest_dx}mm", "couette_error.csv")
-        if os.path.exists(p):
-            d = load(p)
-            ax.semilogy(d["time"], d["velocity_l2_error"], color=STYLE[m][0], ls=STYLE[m][1],
-                        label=m)
+    for what, mu, lw in runs:
+        for m in MAPS:
+            p = os.path.join(out, "runs", f"{what}_{m}_dx{rest_dx}mm", "couette_error.csv")
+            if os.path.exists(p):
+                d = load(p)
+                ax.semilogy(d["time"], d["velocity_l2_error"], color=STYLE[m][0], ls=STYLE[m][1],
+                            lw=lw, label=f"{m}, mu = {mu}")
     ax.set_xlabel("t (s)")
     ax.set_ylabel(r"$\varepsilon / \omega R_i$")
     ax.set_title(f"Error vs time from rest, dx = {rest_dx} mm (Barker Fig. 3b)")
     ax.grid(alpha=0.3, which="both")
-    ax.legend()
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "error_vs_time_from_rest.png"), dpi=120)
+    plt.close(fig)
+
+    # The steady mean profiles from rest: particles binned in radius (8 bins across the gap).
+    fig, axes = plt.subplots(1, len(runs), figsize=(5 * len(runs), 4), squeeze=False)
+    for ax, (what, mu, _) in zip(axes[0], runs):
+        exact = None
+        for m in MAPS:
+            p = os.path.join(out, "runs", f"{what}_{m}_dx{rest_dx}mm", "couette_profile.csv")
+            if not os.path.exists(p):
+                continue
+            d = load(p)
+            edges = np.linspace(d["r"].min(), d["r"].max() + 1e-12, 9)
+            k = np.digitize(d["r"], edges) - 1
+            rb = [d["r"][k == b].mean() for b in range(8) if np.any(k == b)]
+            vb = [d["v_theta"][k == b].mean() for b in range(8) if np.any(k == b)]
+            ax.plot(np.array(rb) * 100, vb, "o", color=STYLE[m][0], ls=STYLE[m][1], label=m)
+            exact = d
+        if exact is not None:
+            o = np.argsort(exact["r"])
+            ax.plot(exact["r"][o] * 100, exact["v_theta_exact"][o], "k-", lw=1, label="analytic")
+        ax.set_xlabel("r (cm)")
+        ax.set_ylabel(r"mean $v_\theta$ (m/s)")
+        ax.set_title(f"From rest, mu = {mu} Pa s, at the end")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"Steady azimuthal velocity from rest, dx = {rest_dx} mm")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "profile_from_rest.png"), dpi=120)
     plt.close(fig)
 
     with open(os.path.join(out, "couette.csv")) as f:

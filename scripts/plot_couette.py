@@ -66,9 +66,12 @@ def main():
     plt.close(fig)
 
     # C and E: from rest, Barker's mu (solid) and the control mu (thin).
-    runs = [("rest", "1e-3", 1.6)]
+    runs = [("rest", "1e-3 Pa s", 1.6)]
     if mu_control:
-        runs.append((f"rest_mu{mu_control}", mu_control, 0.8))
+        runs.append((f"rest_mu{mu_control}", f"{mu_control} Pa s", 0.8))
+        wide = f"rest_mu{mu_control}_h2_mirror_beta_dx{rest_dx}mm"
+        if os.path.isdir(os.path.join(out, "runs", wide)):
+            runs.append((f"rest_mu{mu_control}_h2", f"{mu_control} Pa s, h = 2 dx", 0.5))
     fig, ax = plt.subplots(figsize=(6, 4))
     for what, mu, lw in runs:
         for m in MAPS:
@@ -91,8 +94,12 @@ def main():
     for ax, (what, mu, _) in zip(axes[0], runs):
         exact = None
         for m in MAPS:
-            p = os.path.join(out, "runs", f"{what}_{m}_dx{rest_dx}mm", "couette_profile.csv")
+            run = os.path.join(out, "runs", f"{what}_{m}_dx{rest_dx}mm")
+            p = os.path.join(run, "couette_profile.csv")
             if not os.path.exists(p):
+                continue
+            if os.path.exists(os.path.join(run, "metrics_unstable.json")):
+                ax.plot([], [], "o", color=STYLE[m][0], ls=STYLE[m][1], label=f"{m}: unstable")
                 continue
             d = load(p)
             edges = np.linspace(d["r"].min(), d["r"].max() + 1e-12, 9)
@@ -106,7 +113,7 @@ def main():
             ax.plot(exact["r"][o] * 100, exact["v_theta_exact"][o], "k-", lw=1, label="analytic")
         ax.set_xlabel("r (cm)")
         ax.set_ylabel(r"mean $v_\theta$ (m/s)")
-        ax.set_title(f"From rest, mu = {mu} Pa s, at the end")
+        ax.set_title(f"From rest, mu = {mu}, at the end", fontsize=10)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle(f"Steady azimuthal velocity from rest, dx = {rest_dx} mm")

@@ -54,9 +54,8 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_particles = false;
-  bool wall_force = false;
-  std::string pressure = "symmetric";  // integrals: symmetric | consistent | tensile_control  //
-                                       // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
+  bool wall_force = false;             // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
+  std::string pressure = "symmetric";  // integrals: symmetric | consistent | tensile_control
 };
 
 // setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation

@@ -244,7 +244,29 @@ void Solver<D>::initialize() {
   resort();
   decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
+  const Index owned = decomp_.owned();
+  std::vector<Real> rho_set;
+  if (!continuity_) rho_set.assign(P_.rho.begin(), P_.rho.begin() + owned);
   compute_rates(0);
+  if (!continuity_) {
+    const auto& comm = decomp_.comm();
+    double sum = 0;
+    for (Index i = 0; i < owned; ++i) sum += static_cast<double>(P_.rho[i]) / rho_set[i];
+    const double mean =
+        comm.sum(sum) / std::max<double>(1, static_cast<double>(comm.sum(std::int64_t{owned})));
+    InitialDensityError e;
+    std::int64_t above = 0;
+    for (Index i = 0; i < owned; ++i) {
+      const double q = static_cast<double>(P_.rho[i]) / rho_set[i];
+      e.max = std::max(e.max, std::abs(q - 1));
+      e.local = std::max(e.local, std::abs(q / mean - 1));
+      above += std::abs(q / mean - 1) > 0.01 ? 1 : 0;
+    }
+    e.max = comm.max(e.max);
+    e.local = comm.max(e.local);
+    e.local_above_1pct = static_cast<long>(comm.sum(above));
+    initial_density_error_ = e;
+  }
   check_state();
 }
 

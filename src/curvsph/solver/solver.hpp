@@ -63,6 +63,20 @@ class Solver {
   PhaseTimes& phase_times() { return times_; }
   // The set-up relaxation (setup.relax), when the case asks for one.
   const std::optional<RelaxResult>& relax_result() const { return relax_; }
+  // Summation density only: how far the first density sum (fluid and wall images) lands from
+  // the density the set-up gave each particle (rho0, or an initial field), over all ranks:
+  // the largest |rho/rho_set - 1|, and the largest deviation of rho/rho_set from its mean over
+  // the fluid (`local`; a uniform offset is the kernel's lattice sum or the choice of masses,
+  // a local one is a wall treatment's volume error, Barker Fig. 1, or a gap in the
+  // arrangement), with the number of particles whose local deviation is above 1 %.
+  struct InitialDensityError {
+    double max = 0;
+    double local = 0;
+    long local_above_1pct = 0;
+  };
+  const std::optional<InitialDensityError>& initial_density_error() const {
+    return initial_density_error_;
+  }
 
   // Bytes held by the particle fields, the fluid cell list and the solver's own per-particle
   // scratch (boundary models not included: they do not expose theirs).
@@ -105,6 +119,7 @@ class Solver {
   Real nu_max_ = 0;
   PhaseTimes times_;
   std::optional<RelaxResult> relax_;
+  std::optional<InitialDensityError> initial_density_error_;
   static constexpr long kResortEvery = 20;
 };
 

@@ -24,6 +24,12 @@ def load(path):
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else {}
 
 
+def plot_analytic(ax, d):
+    """The analytic v_theta(r) (Barker eq. 24) at the particles of profile table d."""
+    o = np.argsort(d["r"])
+    ax.plot(d["r"][o] * 100, d["v_theta_exact"][o], "k-", lw=1, label="analytic")
+
+
 def density_plot(out, what, dx, fname, title):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, m in zip(axes, ["mirror", "mirror_beta"]):
@@ -109,8 +115,7 @@ def main():
             ax.plot(np.array(rb) * 100, vb, "o", color=STYLE[m][0], ls=STYLE[m][1], label=m)
             exact = d
         if exact is not None:
-            o = np.argsort(exact["r"])
-            ax.plot(exact["r"][o] * 100, exact["v_theta_exact"][o], "k-", lw=1, label="analytic")
+            plot_analytic(ax, exact)
         ax.set_xlabel("r (cm)")
         ax.set_ylabel(r"mean $v_\theta$ (m/s)")
         ax.set_title(f"From rest, mu = {mu}, at the end", fontsize=10)
@@ -175,8 +180,7 @@ def main():
             ax.plot(d["r"] * 100, d["v_theta"], ".", ms=2, color=STYLE[m][0], label=m)
             exact = d
     if exact is not None:
-        o = np.argsort(exact["r"])
-        ax.plot(exact["r"][o] * 100, exact["v_theta_exact"][o], "k-", lw=1, label="analytic")
+        plot_analytic(ax, exact)
     ax.set_xlabel("r (cm)")
     ax.set_ylabel(r"$v_\theta$ (m/s)")
     ax.set_title(f"Velocity profile at the end, dx = {dx} mm (Barker Fig. 3a)")

@@ -18,9 +18,16 @@
 namespace curvsph {
 namespace {
 
+nlohmann::json run_setup_only(const char* yaml, const std::string& name) {
+  RunOptions o;
+  o.write_files = false;
+  o.progress = false;
+  return run_case(read_case(YAML::Load(yaml), name), o);
+}
+
 TEST(InitialDensityError, MatchesBruteForceLatticeAndImageSums) {
   const double dx = 0.01, h = 1.5 * dx, lx = 0.1, ly = 0.1, rho0 = 1000;
-  YAML::Node root = YAML::Load(R"(
+  const auto m = run_setup_only(R"(
 name: offset_channel
 dimension: 2
 resolution: {dx: 0.01, h_over_dx: 1.5}
@@ -36,11 +43,8 @@ walls:
 boundary: {method: ghost, map: mirror, velocity: no_slip}
 time: {end: 0}
 output: {vtk: false}
-)");
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(read_case(root, "offset_channel.yaml"), o);
+)",
+                                "offset_channel.yaml");
 
   // Lattice of the region box: x = (i + 1/2) dx, y = -0.0035 + (k + 1/2) dx below ly, points
   // closer than 0.3 dx to a wall dropped (README): rows at 0.0115 ... 0.0915.
@@ -88,7 +92,7 @@ output: {vtk: false}
 }
 
 TEST(InitialDensityError, AbsentWithContinuityDensity) {
-  YAML::Node root = YAML::Load(R"(
+  const auto m = run_setup_only(R"(
 name: box
 dimension: 2
 resolution: {dx: 0.01, h_over_dx: 1.5}
@@ -99,11 +103,8 @@ eos: {type: tait, c0: 1.0, gamma: 7, p0: 0}
 density: {method: continuity}
 time: {end: 0}
 output: {vtk: false}
-)");
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(read_case(root, "box.yaml"), o);
+)",
+                                "box.yaml");
   EXPECT_FALSE(m.contains("density_error_initial"));
 }
 

@@ -62,10 +62,11 @@ TEST(NodeDensity, DensityPreservingCloserToInteriorThanMirrorNearCircle) {
 
 // Barker's Couette annulus (dx = 1.875 mm) from a lattice cut by the two circles and packed
 // with the walls active. The lattice drops the points within 0.3 dx of the walls, and the
-// packing spreads the rest over that strip: with masses rho0 dx^2 the fluid started 7.5 %
-// below rho0, in tension (Tait with p0 = 2.5 Pa), and particles went through a wall at
-// t = 0.24 s. With the packed volumes 1/n_i the summation density (the solver's own ghosts)
-// is rho0 at t = 0 and the run keeps every particle inside.
+// packing spreads the rest over that strip: with masses rho0 dx^2 the fluid started up to
+// 7.5 % below rho0, in tension (Tait with p0 = 2.5 Pa), and particles went through a wall
+// (t = 0.21 s after these 300 packing steps, 0.24 s after 3000). With the packed volumes 1/n_i the
+// summation density (the solver's own ghosts) is rho0 at t = 0 and the run keeps every particle
+// inside.
 TEST(Relax, PackedAnnulusStartsAtReferenceDensityAndStaysBetweenItsWalls) {
   YAML::Node root = YAML::Load(R"(
 name: relax_annulus
@@ -81,16 +82,16 @@ walls:
      motion: {rotate: {omega: 1.0, center: [0, 0]}}}
   - {shape: circle, center: [0, 0], radius: 0.040, fluid: inside}
 boundary: {method: ghost, map: mirror_beta, velocity: no_slip}
-setup: {relax: {max_steps: 3000, tolerance: 1.0e-4}}
-time: {end: 0.5, cfl: 0.2}
+setup: {relax: {max_steps: 300, tolerance: 1.0e-4}}
+time: {end: 0.35, cfl: 0.2}
 output: {vtk: false}
 analysis: {couette: {}}
 )");
   const auto m = run_quiet(read_case(root, "relax_annulus.yaml"));
-  EXPECT_LT(m["relax_node_density_spread"].get<double>(), 0.01);
+  EXPECT_LT(m["relax_node_density_spread"].get<double>(), 0.02);  // from 0.081
   EXPECT_LT(m["density_error_t0"].get<double>(), 1e-12);
   EXPECT_EQ(m["unstable"].get<int>(), 0);
-  EXPECT_DOUBLE_EQ(m["time_reached"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(m["time_reached"].get<double>(), 0.35);
 }
 
 }  // namespace

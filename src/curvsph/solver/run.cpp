@@ -224,10 +224,11 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
                  "{:.2g} % ({} particles above 1 %){}\n",
                  c.file_name(), 100 * de->local, de->local_above_1pct,
                  mirror ? "; the mirror map miscounts the ghosts' volume at curved walls "
-                          "(boundary.map mirror_beta or density_preserving corrects it) and a "
-                          "lattice not centred on a wall leaves a gap or an overlap there"
-                        : "; a lattice not centred on a wall leaves a gap or an overlap there "
-                          "(setup.relax packs the particles)");
+                          "(boundary.map mirror_beta or density_preserving corrects it), and an "
+                          "arrangement cut by a wall leaves gaps or overlaps there"
+                        : "; the arrangement is uneven where it meets the walls (a lattice cut "
+                          "by a wall leaves gaps or overlaps there; setup.relax packs a fluid "
+                          "region)");
     }
   }
 

@@ -39,7 +39,8 @@ struct RelaxResult {
   double spread_initial = 0;  // before the first step
   double spread = 0;          // at the final positions
   double seconds = 0;
-  std::vector<Real> node_density;  // n_i at the final positions (fluid and ghosts)
+  // n_i at the final positions (fluid and ghosts); the solver takes it for the masses.
+  std::vector<Real> node_density;
 };
 
 // n at each point of `at` from the fluid points xf (cell list cf, built over xf) and the

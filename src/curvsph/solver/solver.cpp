@@ -100,8 +100,10 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
     // through the wall within 0.25 s). Each particle's volume is instead taken from the
     // packed arrangement, V_i = 1/n_i with n_i = sum_j W_ij + sum_g beta_g W_ig (as
     // SPHinXsys does after its relaxation), so that the fluid starts at its reference density.
+    const std::vector<Real> n = std::move(relax_->node_density);  // not kept for the run
+    relax_->node_density = {};
     for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) {
-      P_.sigma[i] = relax_->node_density[i];
+      P_.sigma[i] = n[i];
       P_.mass[i] = P_.rho[i] / P_.sigma[i];
     }
   }

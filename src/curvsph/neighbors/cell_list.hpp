@@ -22,6 +22,7 @@
 #include <limits>
 #include <vector>
 
+#include "curvsph/core/periodic.hpp"
 #include "curvsph/core/types.hpp"
 
 namespace curvsph {
@@ -62,13 +63,8 @@ class CellList {
 
   // Wraps a position into the periodic box (non-periodic axes untouched).
   void wrap(Vec<D>& x) const {
-    for (int d = 0; d < D; ++d) {
-      if (!periodic_[d]) continue;
-      const Real rel = x[d] - lo_[d];
-      if (rel < 0 || rel >= length_[d])
-        x[d] = lo_[d] + rel - length_[d] * std::floor(rel / length_[d]);
-      if (x[d] >= lo_[d] + length_[d]) x[d] = lo_[d];  // round-off at the upper edge
-    }
+    for (int d = 0; d < D; ++d)
+      if (periodic_[d]) x[d] = wrap_periodic(x[d], lo_[d], length_[d]);
   }
 
   // Minimal-image separation a - b.

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/core/periodic.hpp"
 
 namespace curvsph {
 namespace {
@@ -216,10 +217,8 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
   // the walls expect it.
   for (auto& p : all)
     for (int d = 0; d < D; ++d)
-      if (c.has_domain && c.periodic[d]) {
-        const double L = c.domain_max[d] - c.domain_min[d];
-        p.x[d] -= L * std::floor((p.x[d] - c.domain_min[d]) / L);
-      }
+      if (c.has_domain && c.periodic[d])
+        p.x[d] = wrap_periodic(p.x[d], c.domain_min[d], c.domain_max[d] - c.domain_min[d]);
   P.resize(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     const FluidSpec& fl = c.fluids[phase[i]];

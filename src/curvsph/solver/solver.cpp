@@ -255,7 +255,7 @@ void Solver<D>::initialize() {
     double sum = 0;
     for (Index i = 0; i < owned; ++i) sum += static_cast<double>(P_.rho[i]) / rho_set[i];
     const double mean =
-        comm.sum(sum) / std::max<double>(1, static_cast<double>(comm.sum(std::int64_t{owned})));
+        comm.sum(sum) / std::max<double>(1, static_cast<double>(decomp_.global_count()));
     InitialDensityError e;
     std::int64_t above = 0;
     for (Index i = 0; i < owned; ++i) {

@@ -147,45 +147,39 @@ StudyResult run_couette_study(const StudyContext& ctx) {
   // state; E. the same with mu = 1e-2 (the control). The profiles stay for the plot.
   std::map<std::string, double> rest_l2, rest_profile, control_l2, control_profile;
   std::map<std::string, std::array<double, 4>> wide;  // l2, profile, rho error t0, t reached
+  // One from-rest run of `map` at rest_dx to t_end, with the extra overrides; the profile stays.
+  auto from_rest = [&](const std::string& what, const std::string& map, double t_end,
+                       std::vector<std::string> overrides) {
+    const std::string tag = tag_of(what, map, rest_dx);
+    overrides.insert(overrides.end(),
+                     {dx_set(rest_dx), "boundary.map=" + map, fmt::format("time.end={}", t_end),
+                      fmt::format("output.every={}", t_end / 50)});
+    const auto m = runner.run(tag, overrides, /*from_rest=*/true);
+    prune(ctx.out_dir / "runs" / tag, /*keep_profile=*/true);
+    return m;
+  };
+  const std::string mu_set = fmt::format("fluids.0.viscosity={}", mu_control);
   for (const auto& map : maps) {
-    const std::string tag = tag_of("rest", map, rest_dx);
-    const auto m =
-        runner.run(tag,
-                   {dx_set(rest_dx), "boundary.map=" + map, fmt::format("time.end={}", t_rest),
-                    fmt::format("output.every={}", t_rest / 50)},
-                   /*from_rest=*/true);
+    const auto m = from_rest("rest", map, t_rest, {});
     rest_l2[map] = get(m, "velocity_l2_error");
     rest_profile[map] = get(m, "velocity_profile_error");
     r.metrics[fmt::format("from_rest_{}_velocity_l2_error", map)] = rest_l2[map];
     r.metrics[fmt::format("from_rest_{}_velocity_profile_error", map)] = rest_profile[map];
-    prune(ctx.out_dir / "runs" / tag, /*keep_profile=*/true);
-    const std::string ctag = tag_of(fmt::format("rest_mu{:g}", mu_control), map, rest_dx);
-    const auto mc = runner.run(
-        ctag,
-        {dx_set(rest_dx), "boundary.map=" + map, fmt::format("fluids.0.viscosity={}", mu_control),
-         fmt::format("time.end={}", t_control), fmt::format("output.every={}", t_control / 50)},
-        /*from_rest=*/true);
+    const auto mc = from_rest(fmt::format("rest_mu{:g}", mu_control), map, t_control, {mu_set});
     control_l2[map] = get(mc, "velocity_l2_error");
     control_profile[map] = get(mc, "velocity_profile_error");
     r.metrics[fmt::format("from_rest_mu{:g}_{}_velocity_l2_error", mu_control, map)] =
         control_l2[map];
     r.metrics[fmt::format("from_rest_mu{:g}_{}_velocity_profile_error", mu_control, map)] =
         control_profile[map];
-    prune(ctx.out_dir / "runs" / ctag, /*keep_profile=*/true);
     // E at h = 2 dx: a wider kernel reaches further past the curved walls.
-    const std::string wtag = tag_of(fmt::format("rest_mu{:g}_h2", mu_control), map, rest_dx);
-    const auto mw = runner.run(
-        wtag,
-        {dx_set(rest_dx), "boundary.map=" + map, fmt::format("fluids.0.viscosity={}", mu_control),
-         "resolution.h_over_dx=2", fmt::format("time.end={}", t_control),
-         fmt::format("output.every={}", t_control / 50)},
-        /*from_rest=*/true);
+    const auto mw = from_rest(fmt::format("rest_mu{:g}_h2", mu_control), map, t_control,
+                              {mu_set, "resolution.h_over_dx=2"});
     wide[map] = {get(mw, "velocity_l2_error"), get(mw, "velocity_profile_error"),
                  get(mw, "density_error_t0"), get(mw, "time_reached")};
     r.metrics[fmt::format("from_rest_mu{:g}_h2_{}_velocity_l2_error", mu_control, map)] =
         wide[map][0];
     r.metrics[fmt::format("from_rest_mu{:g}_h2_{}_time_reached", mu_control, map)] = wide[map][3];
-    prune(ctx.out_dir / "runs" / wtag, /*keep_profile=*/true);
   }
 
   // D. Background pressure: p0 / 4 and 4 p0 at plot_dx, mirror_beta, as B.

@@ -12,8 +12,9 @@ namespace curvsph {
 template <int D>
 double integrals_residual(const std::vector<Vec<D>>& x, const CellList<D>& cells,
                           const std::vector<Vec<D>>& ex, const std::vector<Vec<D>>& en,
-                          const std::vector<Real>& ea, const CellList<D>& elem_cells,
-                          const WendlandC2<D>& W, Real volume, std::vector<Vec<D>>& R) {
+                          const std::vector<Real>& ea, const ElementQuadrature<D>& wq,
+                          const CellList<D>& elem_cells, const WendlandC2<D>& W, Real volume,
+                          std::vector<Vec<D>>& R) {
   const Index n = static_cast<Index>(x.size());
   R.resize(x.size());
   parallel_for(n, [&](Index i) {
@@ -23,8 +24,8 @@ double integrals_residual(const std::vector<Vec<D>>& x, const CellList<D>& cells
       if (j != i) g += volume * W.gradient_factor(std::sqrt(r2)) * r;
     });
     // - sum_b W_ib n_b A_b (= - grad gamma in the continuum)
-    elem_cells.for_each_neighbor(x[i], ex, [&](Index b, const Vec<D>&, Real r2) {
-      g -= W.value(std::sqrt(r2)) * ea[b] * en[b];
+    elem_cells.for_each_neighbor(x[i], ex, [&](Index b, const Vec<D>& r, Real) {
+      g -= wq.mean_kernel(W, static_cast<std::size_t>(b), r) * ea[b] * en[b];
     });
     R[i] = g;
   });
@@ -61,6 +62,7 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
   // Elements are found by centre within 2h + rmax; W_ib itself is cut at 2h.
   elem_cells.configure(W.support + static_cast<Real>(rmax), lo, hi, std::array<bool, 3>{});
   elem_cells.build(ex);
+  const ElementQuadrature<D> wq = element_quadrature(el);
 
   const Real volume = static_cast<Real>(std::pow(opt.dx, D));
   const Real f = static_cast<Real>(opt.alpha) * W.h * W.h;
@@ -70,7 +72,7 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
   const Index n = static_cast<Index>(x.size());
   for (long step = 0;; ++step) {
     cells.build(x);
-    const double r = integrals_residual<D>(x, cells, ex, en, ea, elem_cells, W, volume, R);
+    const double r = integrals_residual<D>(x, cells, ex, en, ea, wq, elem_cells, W, volume, R);
     if (step == 0) res.spread_initial = r;
     res.spread = r;
     res.steps = step;
@@ -85,13 +87,13 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
   return res;
 }
 
-#define CURVSPH_RELAX_BI(D)                                                                     \
-  template double integrals_residual<D>(const std::vector<Vec<D>>&, const CellList<D>&,         \
-                                        const std::vector<Vec<D>>&, const std::vector<Vec<D>>&, \
-                                        const std::vector<Real>&, const CellList<D>&,           \
-                                        const WendlandC2<D>&, Real, std::vector<Vec<D>>&);      \
-  template RelaxResult relax_particles_integrals<D>(std::vector<Vec<D>>&, const Wall<D>&,       \
-                                                    CellList<D>&, const WendlandC2<D>&,         \
+#define CURVSPH_RELAX_BI(D)                                                               \
+  template double integrals_residual<D>(                                                  \
+      const std::vector<Vec<D>>&, const CellList<D>&, const std::vector<Vec<D>>&,         \
+      const std::vector<Vec<D>>&, const std::vector<Real>&, const ElementQuadrature<D>&,  \
+      const CellList<D>&, const WendlandC2<D>&, Real, std::vector<Vec<D>>&);              \
+  template RelaxResult relax_particles_integrals<D>(std::vector<Vec<D>>&, const Wall<D>&, \
+                                                    CellList<D>&, const WendlandC2<D>&,   \
                                                     const IntegralsRelaxOptions&);
 CURVSPH_RELAX_BI(2)
 CURVSPH_RELAX_BI(3)

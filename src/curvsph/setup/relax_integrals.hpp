@@ -3,7 +3,9 @@
 // initial particles until the discrete BI identity holds at every particle,
 //   R_i = sum_j V_j grad_i W_ij - sum_b W_ib n_b A_b = 0,
 // i.e. until the particles are an equilibrium of the BI pressure operator for a uniform
-// pressure (the elements as in integrals_boundary.cpp, n_b into the fluid).
+// pressure (the elements as in integrals_boundary.cpp, n_b into the fluid, W_ib the kernel
+// averaged over the element by element_quadrature.hpp, without which the descent stalls at
+// the corners: a midpoint-rule wall sum is not a gradient there).
 //
 // Why: in the continuum sum_b W n A is grad gamma (gamma = int_Omega W, Calderon eq. 3, by
 // the divergence theorem) and sum_j V_j grad W_ij is grad S_i, S_i = sum_j V_j W_ij, so R_i =
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
+#include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
@@ -43,8 +46,9 @@ struct IntegralsRelaxOptions {
 template <int D>
 double integrals_residual(const std::vector<Vec<D>>& x, const CellList<D>& cells,
                           const std::vector<Vec<D>>& ex, const std::vector<Vec<D>>& en,
-                          const std::vector<Real>& ea, const CellList<D>& elem_cells,
-                          const WendlandC2<D>& W, Real volume, std::vector<Vec<D>>& R);
+                          const std::vector<Real>& ea, const ElementQuadrature<D>& wq,
+                          const CellList<D>& elem_cells, const WendlandC2<D>& W, Real volume,
+                          std::vector<Vec<D>>& R);
 
 // Relaxes x in place against the elements of `closure` (the walls bounding the particles'
 // region, fluid side = where the particles are). `cells` must be configured (support 2h,

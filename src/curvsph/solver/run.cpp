@@ -209,6 +209,18 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     log("relaxation: {} steps in {:.2f} s, {} {:.4g} -> {:.4g} (tolerance {})", rr->steps,
         rr->seconds, c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread",
         rr->spread_initial, rr->spread, c.relax.tolerance);
+  if (const auto& rr = solver.relax_result();
+      rr && rr->spread > c.relax.tolerance && o.progress && comm.root() && o.restart.empty()) {
+    // An unconverged packing starts the run off the scheme's equilibrium where it stopped
+    // (with boundary integrals, at the corners and walls: the forces 2 p_i R_i of
+    // integrals_boundary.cpp item 2b), so say it rather than leave it in the log.
+    fmt::print(stderr,
+               "warning: {}: setup.relax stopped at max_steps = {} with {} {:.3g}, above its "
+               "tolerance {:.3g}; raise setup.relax.max_steps or the tolerance\n",
+               c.file_name(), rr->steps,
+               c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread",
+               rr->spread, c.relax.tolerance);
+  }
   if (const auto& de = solver.initial_density_error()) {
     log("first density sum against the set-up density: max |rho/rho_set - 1| = {:.3g}; about "
         "its mean, max {:.3g} with {} particles above 1 %",

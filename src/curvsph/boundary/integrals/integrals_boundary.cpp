@@ -2,7 +2,9 @@
 // continuity equations, consistent with the sigma-form fluid sums of physics/momentum.hpp and
 // physics/density.hpp.
 //
-// Notation: r_ib = x_i - x_b, W_ib = W(|r_ib|), n_b the unit element normal pointing INTO the
+// Notation: r_ib = x_i - x_b, W_ib = (1/A_b) int_b W(|x_i - y|) dS_y (Gauss points on the
+// element, element_quadrature.hpp; W at the centre leaves a curl at corners), n_b the unit
+// element normal pointing INTO the
 // fluid, A_b the element area (length in 2-D), V_j = m_j/rho_j = 1/sigma_j, grad_i W_ij =
 // r_ij (1/r) dW/dr.
 //
@@ -212,6 +214,7 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
                         c.periodic);
   elem_cells_.build(ex_);
   p_wall_.assign(m, 0);
+  wq_ = element_quadrature(el_);
   if (mode_ == ShepardMode::geometric) geometric_ = GeometricShepard<D>(el_, W_.h, quad_);
   built_ = true;
 }
@@ -270,14 +273,15 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       for_each_element(x, [&](Index b, const Vec<D>& r, Real r2) {
         idx.push_back(static_cast<std::size_t>(b));
         shift.push_back(x - r - ex_[b]);
-        if (r2 < active2) {
+        // W averaged over the element (element_quadrature.hpp: why not W at its centre).
+        const Real w = wq_.mean_kernel(W_, static_cast<std::size_t>(b), r);
+        if (r2 < active2 || w != 0) {
           // Test before setting: dozens of particles lie within 2h of each element, and a
           // store by both threads to the same cache line for every one of them bounces the
           // line between the cores; a load leaves it shared once the flag is set.
           std::atomic_ref<unsigned char> flag(active_[b]);
           if (!flag.load(std::memory_order_relaxed)) flag.store(1, std::memory_order_relaxed);
         }
-        const Real w = W_.value(std::sqrt(r2));
         if (w != 0) buf.push_back({b, r, w});
       });
       pair_local_[i] = first;

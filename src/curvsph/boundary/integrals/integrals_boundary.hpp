@@ -14,6 +14,7 @@
 
 #include "curvsph/boundary/boundary_model.hpp"
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
+#include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
 
 namespace curvsph {
@@ -63,6 +64,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   ShepardMode mode_;
   ShepardQuadrature quad_;
   GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
+  ElementQuadrature<D> wq_;        // Gauss points of the wall terms' W_ib
   bool wall_force_ = false;
   bool consistent_ = false;  // boundary.pressure: consistent
   bool tensile_ = false;     // boundary.pressure: tensile_control (consistent where p_i < 0)

@@ -52,5 +52,17 @@ TEST_F(RunCache, DamagedRecordIsAMiss) {
   EXPECT_TRUE(cached_run(dir_, "0123456789abcdef", overrides_).is_null());
 }
 
+TEST_F(RunCache, RunStoppedBySignalIsNotKept) {
+  // A study stopped with Ctrl-C (or SIGTERM) ends its current run gracefully with "stopped":
+  // 1; kept, that partial run would come back as finished.
+  nlohmann::json stopped = metrics_;
+  stopped["stopped"] = 1;
+  EXPECT_THROW(store_run(dir_, "0123456789abcdef", overrides_, stopped), std::runtime_error);
+  EXPECT_TRUE(cached_run(dir_, "0123456789abcdef", overrides_).is_null());
+  stopped["stopped"] = 0;
+  store_run(dir_, "0123456789abcdef", overrides_, stopped);
+  EXPECT_FALSE(cached_run(dir_, "0123456789abcdef", overrides_).is_null());
+}
+
 }  // namespace
 }  // namespace curvsph

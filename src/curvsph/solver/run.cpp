@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "curvsph/analysis/analysis.hpp"
+#include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
@@ -388,6 +389,10 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     m["density_error_initial_local"] = de->local;
     m["density_error_initial_local_above_1pct"] = de->local_above_1pct;
   }
+  // Which wall-term quadrature a boundary-integral run used (element_quadrature.hpp): stored
+  // runs from before it (W at the element centres) lack the key, and studies say so.
+  if (c.boundary.method == "integrals")
+    m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
   if (const auto& rr = solver.relax_result()) {
     m["relax_steps"] = rr->steps;
     m["relax_node_density_spread"] = rr->spread;

@@ -21,6 +21,7 @@
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/core/error.hpp"
@@ -244,6 +245,9 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       o.progress = false;
       o.write_files = false;
       const auto m = run_case(c, o);
+      // A run ended by SIGINT / SIGTERM is partial: its t_max is not the run's; it is not
+      // recorded in tmax_runs.csv, so the next invocation redoes it.
+      if (m.value("stopped", 0) != 0) throw std::runtime_error("stopped by a signal");
       run.t_max = m["t_max"];
       run.penetrations = m["penetrations"];
       run.blowup = m["blowup"];

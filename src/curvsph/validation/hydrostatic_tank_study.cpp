@@ -59,6 +59,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
       "| run | N | h/dx | Shepard | t√(g/H) asked | reached | KE max / (MgH) | p L2 error | "
       "escaped | wall s |\n|---|---|---|---|---|---|---|---|---|---|\n";
   StudyResult r;
+  int midpoint_runs = 0;
   for (const auto& run : runs) {
     const double dx = 1.0 / run.cells;
     const std::string tag = fmt::format("n{}_h{}_{}", run.cells, run.h_over_dx, run.shepard);
@@ -96,10 +97,13 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     csv << fmt::format("{},{:.9g},{},{},{},{},{},{:.6g},{},{:.6g},{:.6g},{},{:.1f}\n", tag, dx,
                        run.h_over_dx, run.shepard, n, steps, run.tau_end, tau, unstable ? 1 : 0, ke,
                        pe, escaped, wall);
+    // Runs stored before the element quadrature of the wall terms (findings.md, session 10).
+    const bool midpoint = !m.contains("bi_element_quadrature_points");
+    if (midpoint) ++midpoint_runs;
     table +=
-        fmt::format("| `{}` | {} | {} | {} | {:g} | {:.2f}{} | {:.3g} | {:.4f} | {} | {:.0f} |\n",
-                    tag, n, run.h_over_dx, run.shepard, run.tau_end, tau,
-                    unstable ? " (**failed**)" : "", ke, pe, escaped, wall);
+        fmt::format("| `{}`{} | {} | {} | {} | {:g} | {:.2f}{} | {:.3g} | {:.4f} | {} | {:.0f} |\n",
+                    tag, midpoint ? " (midpoint)" : "", n, run.h_over_dx, run.shepard, run.tau_end,
+                    tau, unstable ? " (**failed**)" : "", ke, pe, escaped, wall);
     r.metrics[tag + "_kinetic_energy_max"] = ke;
     r.metrics[tag + "_pressure_l2_error"] = pe;
     r.metrics[tag + "_escaped_particles"] = escaped;
@@ -145,7 +149,8 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "error of 0.0022). "
         "The lattice is first packed for the BI operators (`setup.relax.map: integrals`, "
         "setup/relax_integrals.hpp: max h|R| < 1e-4 for R_i = sum_j V_j grad W_ij - sum_b W_ib "
-        "n_b A_b); on the bare lattice R_i leaves -1.76 g on the first floor row at t = 0 and "
+        "n_b A_b, W_ib the kernel averaged over element b); on the bare lattice R_i leaves -1.76 g "
+        "on the first floor row at t = 0 and "
         "the column rings at ~5 % of rho0 g H (findings.md). "
         "Geometric Shepard factor (Calderon) against the volume factor sum_j W_ij V_j (the "
         "paper's traditional formulation). Reduced time t sqrt(g/H); kinetic energy over M g H; "
@@ -171,7 +176,16 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "(RUN/study_run.json holds the case file's fingerprint, the overrides and the metrics), "
         "so only the changed runs are redone. A run marked failed stopped with an instability "
         "(a particle through a wall or a density out of "
-        "range) at the time shown.\n\n## Summary\n\n"
+        "range) at the time shown.\n\n"
+     << (midpoint_runs > 0
+             ? fmt::format(
+                   "**{} run(s) marked (midpoint)** were stored before the wall terms averaged "
+                   "the kernel over each element (element_quadrature.hpp, session 10) and took "
+                   "W at the element centres; their rows are that code's, not today's "
+                   "(findings.md, session 10).\n\n",
+                   midpoint_runs)
+             : std::string())
+     << "## Summary\n\n"
      << summary_markdown(r.summary)
      << "\n## Figures\n\n![kinetic energy](kinetic_energy.png)\n\n"
         "![pressure error](pressure_error.png)\n\n![pressure profile](pressure_profile.png)\n\n"

@@ -1,6 +1,7 @@
 #include "curvsph/validation/run_cache.hpp"
 
 #include <fstream>
+#include <stdexcept>
 
 namespace curvsph {
 namespace {
@@ -22,6 +23,12 @@ nlohmann::json cached_run(const std::filesystem::path& dir, const std::string& c
 
 void store_run(const std::filesystem::path& dir, const std::string& case_fingerprint,
                const std::vector<std::string>& overrides, const nlohmann::json& metrics) {
+  // A run ended by SIGINT / SIGTERM (metrics "stopped") is partial: kept, it would be reused
+  // as finished by the next invocation. Refusing also ends the study, which is what the signal
+  // asked for (the run itself stops gracefully and the study would go on to the next run).
+  if (metrics.value("stopped", 0) != 0)
+    throw std::runtime_error("the run in " + dir.string() +
+                             " was stopped by a signal: not kept for reuse; the study stops");
   const nlohmann::json j = {
       {"case_key", case_fingerprint}, {"overrides", overrides}, {"metrics", metrics}};
   std::ofstream(dir / kFile) << j.dump(2) << '\n';

@@ -17,7 +17,8 @@ namespace curvsph {
 nlohmann::json cached_run(const std::filesystem::path& dir, const std::string& case_fingerprint,
                           const std::vector<std::string>& overrides);
 
-// Keeps a finished run's metrics in `dir` (which must exist) for cached_run.
+// Keeps a finished run's metrics in `dir` (which must exist) for cached_run. A run stopped by a
+// signal (metrics "stopped" = 1) is not kept: throws std::runtime_error, ending the study.
 void store_run(const std::filesystem::path& dir, const std::string& case_fingerprint,
                const std::vector<std::string>& overrides, const nlohmann::json& metrics);
 

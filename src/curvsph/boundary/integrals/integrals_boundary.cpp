@@ -73,7 +73,12 @@
 //    (the 2 p_i R_i part: -1.739), row 1: +0.612, row 2: +0.614; packed (max h|R| 1.8e-2 ->
 //    1e-4 in 1613 steps): row 0: -68.57, +69.55, -0.017 (2 p_i R_i part: -1e-4), row 1:
 //    +0.002, row 2: -0.0002; side walls from -0.88 g to -1e-4 g. The symmetric form (with its
-//    wall stiffness) is kept and starts in balance.
+//    wall stiffness) is kept and starts in balance. (Those figures were measured with W_ib at
+//    the element centres. That midpoint rule leaves a curl in sum_b W_ib n_b A_b at corners,
+//    where the packing then stalled (max h|R| ~5e-4 at h/dx = 3 whatever the step count) and
+//    the p_i R_i left there drove a circulation at the bottom corners that grew at h/dx = 3
+//    and 4; element_quadrature.hpp has the measurements. With the element average the packing
+//    converges at every corner, in ~100 steps.)
 // 2c. Tried and not kept (same tank, to t sqrt(g/H) = 2): (i) the correction of 2b only in
 //    the directions the wall elements face (projector N / lambda_max(N), N = sum_b W A n n^T),
 //    keeping the tangential ordering force along the wall: error 0.004 up to t sqrt(g/H) =

@@ -17,10 +17,11 @@
 // 1e-4 in 76 / 79 / 99 steps at h/dx = 2 / 3 / 4 (the midpoint rule: 1613 / never / never).
 //
 // Shapes (boundary_elements.hpp): 2-D elements are integrated along the parabola through
-// their two vertices and their centre (a segment, or an arc to O(kappa^2 A^3)), two Gauss
-// points; 3-D quadrilaterals on the bilinear patch through their vertices lifted by a bubble
-// (1 - s^2)(1 - t^2) to pass through the centre (on the true wall for curved patches), 2 x 2
-// Gauss points; triangles by the 3-point rule of degree 2 at (2/3, 1/6, 1/6), the fourth point
+// their two vertices and their centre (a segment, or an arc: on a circle of radius 0.2 cut
+// into arcs of 0.05 the points lie within 1.4e-6 of it, where the chord's midpoint is 1.6e-3
+// off), two Gauss points; 3-D quadrilaterals on the bilinear patch through their vertices lifted by
+// a bubble (1 - s^2)(1 - t^2) to pass through the centre (on the true wall for curved patches), 2 x
+// 2 Gauss points; triangles by the 3-point rule of degree 2 at (2/3, 1/6, 1/6), the fourth point
 // with weight 0. Weights are fractions of the element's area (sum 1): the area itself stays
 // the element's own A_b.
 #include <vector>

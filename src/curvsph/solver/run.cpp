@@ -349,6 +349,8 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       m["unstable"] = 1;  // 0/1 as in metrics.json
       m["unstable_message"] = e.what();
+      if (c.boundary.method == "integrals")
+        m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
       with_all([&](const Particles<D>& all) {
         for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
       });

@@ -206,10 +206,18 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const auto n_particles = static_cast<std::size_t>(solver.decomposition().global_count());
   log("{} particles, dimension {}, dx = {}, h = {}, threads = {}, ranks = {}", n_particles, D, c.dx,
       c.h(), omp_get_max_threads(), comm.size());
+  // Which wall-term quadrature a boundary-integral run used (element_quadrature.hpp), in
+  // metrics.json and metrics_unstable.json alike: stored runs from before it (W at the element
+  // centres) lack the key, and studies say so.
+  const auto label_quadrature = [&](nlohmann::json& m) {
+    if (c.boundary.method == "integrals")
+      m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
+  };
+  const char* relax_figure =
+      c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread";
   if (const auto& rr = solver.relax_result())
     log("relaxation: {} steps in {:.2f} s, {} {:.4g} -> {:.4g} (tolerance {})", rr->steps,
-        rr->seconds, c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread",
-        rr->spread_initial, rr->spread, c.relax.tolerance);
+        rr->seconds, relax_figure, rr->spread_initial, rr->spread, c.relax.tolerance);
   if (const auto& rr = solver.relax_result();
       rr && rr->spread > c.relax.tolerance && o.progress && comm.root() && o.restart.empty()) {
     // An unconverged packing starts the run off the scheme's equilibrium where it stopped
@@ -218,9 +226,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     fmt::print(stderr,
                "warning: {}: setup.relax stopped at max_steps = {} with {} {:.3g}, above its "
                "tolerance {:.3g}; raise setup.relax.max_steps or the tolerance\n",
-               c.file_name(), rr->steps,
-               c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread",
-               rr->spread, c.relax.tolerance);
+               c.file_name(), rr->steps, relax_figure, rr->spread, c.relax.tolerance);
   }
   if (const auto& de = solver.initial_density_error()) {
     log("first density sum against the set-up density: max |rho/rho_set - 1| = {:.3g}; about "
@@ -349,8 +355,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       m["unstable"] = 1;  // 0/1 as in metrics.json
       m["unstable_message"] = e.what();
-      if (c.boundary.method == "integrals")
-        m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
+      label_quadrature(m);
       with_all([&](const Particles<D>& all) {
         for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
       });
@@ -391,10 +396,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     m["density_error_initial_local"] = de->local;
     m["density_error_initial_local_above_1pct"] = de->local_above_1pct;
   }
-  // Which wall-term quadrature a boundary-integral run used (element_quadrature.hpp): stored
-  // runs from before it (W at the element centres) lack the key, and studies say so.
-  if (c.boundary.method == "integrals")
-    m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
+  label_quadrature(m);
   if (const auto& rr = solver.relax_result()) {
     m["relax_steps"] = rr->steps;
     m["relax_node_density_spread"] = rr->spread;

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cmath>
-#include <stdexcept>
 
 namespace curvsph {
 
@@ -17,7 +16,15 @@ void store(ElementQuadrature<D>& q, std::size_t b, const std::array<VecD<D>, N>&
            const std::array<double, N>& w, const VecD<D>& centre) {
   double sum = 0;
   for (double wk : w) sum += wk;
-  if (!(sum > 0)) throw std::invalid_argument("boundary element with zero area in its quadrature");
+  if (!(sum > 0)) {
+    // A degenerate element (zero length or area, e.g. a sliver triangle of an STL mesh): its
+    // whole weight at the centre, as the midpoint rule, rather than stopping the run.
+    for (std::size_t k = 0; k < N; ++k) {
+      q.offset[b * ElementQuadrature<D>::kPoints + k] = Vec<D>::Zero();
+      q.weight[b * ElementQuadrature<D>::kPoints + k] = k == 0 ? 1 : 0;
+    }
+    return;
+  }
   for (std::size_t k = 0; k < N; ++k) {
     q.offset[b * ElementQuadrature<D>::kPoints + k] = (y[k] - centre).template cast<Real>();
     q.weight[b * ElementQuadrature<D>::kPoints + k] = static_cast<Real>(w[k] / sum);

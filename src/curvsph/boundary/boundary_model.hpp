@@ -26,6 +26,7 @@
 #include "curvsph/kernels/wendland.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
+#include "curvsph/physics/particle_shifting.hpp"
 
 namespace curvsph {
 
@@ -51,6 +52,12 @@ class BoundaryModel {
   virtual void add_density(Particles<D>& P) = 0;
   virtual void add_density_rate(Particles<D>& P) = 0;
   virtual void add_accelerations(Particles<D>& P) = 0;
+  // Particle shifting (physics/particle_shifting.hpp): adds the walls' share to the fluid's
+  // shift direction sums.s of particles [0, n), after shift_sums() and before apply_shift(),
+  // so that a particle next to a wall sees a closed support (the fluid sum alone pushes it
+  // into the wall). Called at the positions of the last prepare().
+  virtual void add_shift_sums(const Particles<D>& P, Index n, Real dx,
+                              ShiftScratch<D>& sums) const = 0;
   // Indices of fluid particles found on the wrong side of a wall by the last prepare().
   virtual const std::vector<Index>& penetrated() const = 0;
   // Seconds, accumulated over every prepare(), spent computing the Shepard factor gamma (a part

@@ -322,8 +322,12 @@ void Solver<D>::step(Real dt_cap) {
   if (case_.shifting > 0) {
     decomp_.update_halo(P_.v);  // [mpi] the kick above is right for owned particles only
     Stopwatch sw{times_.integrate};
-    shift_particles(P_, cells_, W_, static_cast<Real>(case_.dx), static_cast<Real>(case_.shifting),
-                    shift_, decomp_.pair_rule(cells_));
+    const Real dx = static_cast<Real>(case_.dx);
+    const auto rule = decomp_.pair_rule(cells_);
+    shift_sums(P_, cells_, W_, dx, shift_, rule);
+    const Index n = rule.computed(P_);
+    if (boundary_) boundary_->add_shift_sums(P_, n, dx, shift_);  // walls close the support
+    apply_shift(P_, n, cells_, W_, dx, static_cast<Real>(case_.shifting), shift_);
   }
   t_ += dt_;
   ++steps_;

@@ -1,5 +1,7 @@
 #include "curvsph/boundary/ghost/ghost_boundary.hpp"
 
+#include <array>
+
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/core/parallel.hpp"
 
@@ -103,6 +105,32 @@ class GhostBoundary final : public BoundaryModel<D> {
       if (!any) return;
       const Real inv_m = 1 / P.mass[i];
       P.a[i] += -inv_m * grad_p + mu * inv_m * visc;
+    });
+  }
+
+  // The ghosts enter the shift direction as neighbours (beta_g source volumes, as in the
+  // density sum). A particle within dx of a wall is not shifted towards it
+  // (shift_toward_wall_removed): its own ghost, the one that would repel it, sits at 2d, where
+  // grad W vanishes as d -> 0. The Taylor gradients stay the fluid's: with the ghosts' no-slip
+  // velocities in grad v, the Couette annulus from rest (dx = 1.875 mm, C = 0.01) blew up at
+  // t = 3.4 s; without them it ran to 40 s.
+  void add_shift_sums(const Particles<D>& P, Index n, Real dx,
+                      ShiftScratch<D>& sums) const override {
+    if (G_.size() == 0) return;
+    const Real w_dx = W_.value(dx);
+    parallel_for(n, [&](Index i) {
+      std::array<Vec<D>, 4> close{};  // normals of the walls within dx (own single ghosts)
+      int nc = 0;
+      cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
+        const Index s = G_.source[g];
+        const Real rr = std::sqrt(r2);
+        const Real Vg = G_.beta[g] * P.mass[s] / P.rho[s];
+        sums.s[i] += shift_pair_weight(W_, rr, w_dx) * Vg * W_.gradient_factor(rr) * r;
+        if (s == i && G_.reflections[g] == 1 && G_.source_depth[g] < dx && nc < 4)
+          close[static_cast<std::size_t>(nc++)] = G_.normal[g].template cast<Real>();
+      });
+      for (int k = 0; k < nc; ++k)
+        shift_toward_wall_removed(sums.s[i], close[static_cast<std::size_t>(k)]);
     });
   }
 

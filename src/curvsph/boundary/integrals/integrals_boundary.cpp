@@ -446,6 +446,21 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
   });
 }
 
+// Shifting: the shift direction takes the residual of the constant-field identity of item 1,
+// sum_j V_j grad_i W_ij - sum_b W_ib n_b A_b, which the BI packing (setup/relax_integrals.hpp)
+// drives to zero. Within dx of a wall the shift towards it is removed, as for ghosts (the
+// wall sum's push fades with the distance). The Taylor gradients stay the fluid's (see the
+// ghost model for why).
+template <int D>
+void IntegralsBoundary<D>::add_shift_sums(const Particles<D>& P, Index n, Real dx,
+                                          ShiftScratch<D>& sums) const {
+  check_prepared(P);
+  parallel_for(n, [&](Index i) {
+    for (const Pair& q : pairs_of(i)) sums.s[i] -= (q.w * ea_[q.b]) * en_[q.b];
+    if (near_[i] && wall_dist_[i] < dx) shift_toward_wall_removed(sums.s[i], wall_normal_[i]);
+  });
+}
+
 template <int D>
 void IntegralsBoundary<D>::append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const {
   x.insert(x.end(), ex_.begin(), ex_.end());

@@ -33,6 +33,8 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   void add_density(Particles<D>& P) override;
   void add_density_rate(Particles<D>& P) override;
   void add_accelerations(Particles<D>& P) override;
+  void add_shift_sums(const Particles<D>& P, Index n, Real dx,
+                      ShiftScratch<D>& sums) const override;
   const std::vector<Index>& penetrated() const override { return penetrated_; }
   double shepard_seconds() const override { return shepard_seconds_; }
   void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../support/bi_tank.hpp"
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
@@ -19,23 +20,8 @@
 namespace curvsph {
 namespace {
 
-// A small box tank at rest: 0.1 m wide, water 0.048 m deep (25 x 12 = 300 particles at
-// dx = 4 mm), c0 = 10 sqrt(g H).
 YAML::Node tank(const std::string& shepard) {
-  YAML::Node root = YAML::Load(R"(
-dimension: 2
-resolution: {dx: 0.004, h_over_dx: 2}
-fluids: [{rho0: 998, viscosity: 8.94e-4, region: {box: {min: [0, 0], max: [0.1, 0.048]}}}]
-initial: {hydrostatic: {depth: 0.048}}
-eos: {type: linear, c0: 6.9, p0: 0}
-density: {method: continuity, delta_sph: 0.1}
-gravity: [0, -9.81]
-walls: [{shape: box, min: [0, 0], max: [0.1, 0.08], fluid: inside}]
-time: {end: 1.0, cfl: 0.25, max_steps: 300}
-analysis: {hydrostatic: {depth: 0.048}}
-)");
-  root["boundary"] = YAML::Load("{method: integrals, shepard: " + shepard + "}");
-  return root;
+  return test::bi_tank(shepard);
 }
 
 TEST(IntegralsBoundary, GammaMatchesGeometricShepardOnTankLattice) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "../support/bi_tank.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -116,20 +117,8 @@ Vec2 brute_bi_sum(const Particles<2>& P, std::size_t i, const BoundaryElements<2
 
 TEST(WallShifting, IntegralsSubtractTheirWallSum) {
   // A 0.1 m wide box tank, water 0.048 m deep, packed for the BI operators.
-  YAML::Node root = YAML::Load(R"(
-dimension: 2
-resolution: {dx: 0.004, h_over_dx: 2}
-fluids: [{rho0: 998, viscosity: 8.94e-4, region: {box: {min: [0, 0], max: [0.1, 0.048]}}}]
-initial: {hydrostatic: {depth: 0.048}}
-eos: {type: linear, c0: 6.9, p0: 0}
-density: {method: continuity, delta_sph: 0.1}
-gravity: [0, -9.81]
-walls: [{shape: box, min: [0, 0], max: [0.1, 0.08], fluid: inside}]
-boundary: {method: integrals, shepard: geometric}
-setup: {relax: {map: integrals, max_steps: 3000, tolerance: 1.0e-5}}
-time: {end: 1.0}
-output: {vtk: false}
-)");
+  YAML::Node root = test::bi_tank("geometric");
+  root["setup"] = YAML::Load("{relax: {map: integrals, max_steps: 3000, tolerance: 1.0e-5}}");
   const Case c = read_case(root, "shifting_test");
   Solver<2> s(c);
   s.initialize();

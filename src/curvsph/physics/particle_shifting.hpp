@@ -52,8 +52,8 @@ struct ShiftScratch {
 template <int D>
 inline Real shift_pair_weight(const WendlandC2<D>& W, Real r, Real w_dx) {
   const Real ratio = W.value(r) / w_dx;
-  const Real r2 = ratio * ratio;
-  return 1 + Real(0.2) * r2 * r2;
+  const Real r4 = ratio * ratio * ratio * ratio;
+  return 1 + Real(0.2) * r4;
 }
 
 // For a particle close to a wall of unit normal n (into the fluid): drops the part of the

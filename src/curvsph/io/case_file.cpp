@@ -352,7 +352,8 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   }
 
   const Keys bnd = top.sub("boundary");
-  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure"});
+  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure",
+             "ghost_pressure"});
   c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
   c.boundary.map =
       bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
@@ -363,6 +364,11 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.boundary.wall_force = bnd.boolean("wall_force", false);
   c.boundary.pressure =
       bnd.choice("pressure", {"symmetric", "consistent", "tensile_control"}, "symmetric");
+  c.boundary.ghost_pressure = bnd.choice("ghost_pressure", {"copy", "hydrostatic"}, "copy");
+  if (bnd.has("ghost_pressure") && c.boundary.method != "ghost")
+    bnd.fail(bnd.key("ghost_pressure"),
+             "applies to method: ghost (boundary integrals always extrapolate the wall pressure "
+             "with its hydrostatic part)");
   const YAML::Node walls = top.raw("walls");
   if (top.has("walls") && !walls.IsSequence()) top.fail("walls", "must be a list of walls");
   const bool has_walls = top.has("walls") && walls.size() > 0;

@@ -54,8 +54,9 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_particles = false;
-  bool wall_force = false;             // integrals: repulsion closer than 0.1 dx (Calderon §3.2)
-  std::string pressure = "symmetric";  // integrals: symmetric | consistent | tensile_control
+  bool wall_force = false;  // repulsion closer than 0.1 dx (Calderon §3.2), both methods
+  std::string pressure = "symmetric";   // integrals: symmetric | consistent | tensile_control
+  std::string ghost_pressure = "copy";  // ghost: copy | hydrostatic (p_s + rho_s g.(x_g - x_s))
 };
 
 // setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation

@@ -50,12 +50,13 @@ struct Generator {
   using Record = typename GhostSet<D>::Record;
 
   void emit(std::vector<Record>& out, Index i, std::int32_t wall, const VecD<D>& xg,
-            const VecD<D>& ug, double beta, double depth, double d, const VecD<D>& foot,
-            const VecD<D>& n, std::uint8_t reflections) const {
+            const VecD<D>& ug, const VecD<D>& ug_slip, double beta, double depth, double d,
+            const VecD<D>& foot, const VecD<D>& n, std::uint8_t reflections) const {
     Record r;
     r.x = xg.template cast<Real>();
     if (opt.cells) opt.cells->wrap(r.x);
     r.v = ug.template cast<Real>();
+    r.v_slip = ug_slip.template cast<Real>();
     r.beta = static_cast<Real>(beta);
     r.source = i;
     r.wall = wall;
@@ -70,7 +71,7 @@ struct Generator {
   // Reflects (x, u) across the flat faces listed in `set` in turn and emits the result.
   void emit_corner(std::vector<Record>& out, Index i, const VecD<D>& x0, const VecD<D>& u0,
                    const FlatFace<D>* const* set, int count) const {
-    VecD<D> x = x0, u = u0, foot = x0, n = x0;
+    VecD<D> x = x0, u = u0, u_slip = u0, foot = x0, n = x0;
     double d = 0;
     for (int r = 0; r < count; ++r) {
       n = set[r]->normal;
@@ -78,9 +79,11 @@ struct Generator {
       foot = x - d * n;
       const VecD<D> uw = walls[set[r]->wall].motion.velocity_at(foot);
       u = ghost_velocity<D>(opt.velocity, u, uw, n, 1.0);
+      u_slip = ghost_velocity<D>(GhostVelocity::free_slip, u_slip, uw, n, 1.0);
       x = foot - d * n;
     }
-    emit(out, i, set[count - 1]->wall, x, u, 1.0, d, d, foot, n, static_cast<std::uint8_t>(count));
+    emit(out, i, set[count - 1]->wall, x, u, u_slip, 1.0, d, d, foot, n,
+         static_cast<std::uint8_t>(count));
   }
 
   // Returns {penetrated, no_root}.
@@ -114,8 +117,8 @@ struct Generator {
             foot[a] = s == 0 ? lo[a] : hi[a];
             const VecD<D> n = VecD<D>::Unit(a) * (s == 0 ? 1.0 : -1.0);
             const VecD<D> uw = box->motion.velocity_at(foot);
-            emit(out, i, k, foot - d * n, ghost_velocity<D>(opt.velocity, u, uw, n, 1.0), 1.0, d, d,
-                 foot, n, 1);
+            emit(out, i, k, foot - d * n, ghost_velocity<D>(opt.velocity, u, uw, n, 1.0),
+                 ghost_velocity<D>(GhostVelocity::free_slip, u, uw, n, 1.0), 1.0, d, d, foot, n, 1);
             if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k};
           }
         }
@@ -138,7 +141,8 @@ struct Generator {
       }
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
       emit(out, i, k, p.foot - g.depth * p.normal,
-           ghost_velocity<D>(opt.velocity, u, uw, p.normal, g.depth / p.distance), g.beta, g.depth,
+           ghost_velocity<D>(opt.velocity, u, uw, p.normal, g.depth / p.distance),
+           ghost_velocity<D>(GhostVelocity::free_slip, u, uw, p.normal, 1.0), g.beta, g.depth,
            p.distance, p.foot, p.normal, 1);
       if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat) flat[nflat++] = {p.foot, p.normal, k};
     }
@@ -213,6 +217,10 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
       const std::size_t m = offsets_[T];
       x.resize(m);
       v.resize(m);
+      if (options.velocity == GhostVelocity::no_slip)
+        v_slip.resize(m);
+      else
+        v_slip.clear();
       beta.resize(m);
       source.resize(m);
       wall.resize(m);
@@ -226,6 +234,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     for (const Record& r : buf) {
       x[o] = r.x;
       v[o] = r.v;
+      if (!v_slip.empty()) v_slip[o] = r.v_slip;
       beta[o] = r.beta;
       source[o] = r.source;
       wall[o] = r.wall;

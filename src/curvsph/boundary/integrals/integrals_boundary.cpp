@@ -136,10 +136,9 @@
 //    free surface included: that is the "traditional" factor the paper compares against);
 //    none: 1.
 //
-// 8. Optional wall force (boundary.wall_force): for a particle at distance d < d0 = 0.1 dx,
-//      a_i += (c0^2 / dx) (1 - d/d0)^2 n_w,
-//    a pressure-like stiffness (c0^2 times a strain over the particle spacing) that vanishes
-//    with its derivative at d0. Particles at distance <= 0 are reported as penetrated.
+// 8. Optional wall force (boundary.wall_force, boundary/wall_force.hpp): for a particle at
+//    distance d < d0 = 0.1 dx from a wall, a_i += (c0^2 / dx) (1 - d/d0)^2 n_w, from each wall
+//    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <algorithm>
@@ -173,6 +172,7 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   consistent_ = c.boundary.pressure == "consistent";
   tensile_ = c.boundary.pressure == "tensile_control";
   dx_ = static_cast<Real>(c.dx);
+  wall_force_law_ = WallForce(F_.eos.c0, dx_);
 }
 
 template <int D>
@@ -402,8 +402,6 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     });
     p_wall_[b] = den > 0 ? num / den : 0;
   });
-  const Real c02 = F_.eos.c0 * F_.eos.c0;
-  const Real d0 = Real(0.1) * dx_;
   const Real dn_min = Real(0.5) * dx_;
   parallel_for(static_cast<Index>(P.size()), [&](Index i) {
     const Real inv_g = 1 / gamma_[i];
@@ -439,10 +437,8 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       P.a[i] += blend * inv_g * P.p[i] / P.mass[i] * (c - (2 / si) * wn);
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
-    if (wall_force_ && wall_dist_[i] < d0) {
-      const Real s = 1 - std::max(wall_dist_[i], Real(0)) / d0;
-      P.a[i] += (c02 / dx_) * s * s * wall_normal_[i];
-    }
+    if (wall_force_ && wall_force_law_.active(wall_dist_[i]))
+      P.a[i] += wall_force_push(walls_, P.x[i], wall_force_law_);
   });
 }
 

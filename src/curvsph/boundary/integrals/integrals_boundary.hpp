@@ -16,6 +16,7 @@
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
 #include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
+#include "curvsph/boundary/wall_force.hpp"
 
 namespace curvsph {
 
@@ -68,6 +69,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
   ElementQuadrature<D> wq_;        // Gauss points of the wall terms' W_ib
   bool wall_force_ = false;
+  WallForce wall_force_law_;
   bool consistent_ = false;  // boundary.pressure: consistent
   bool tensile_ = false;     // boundary.pressure: tensile_control (consistent where p_i < 0)
   Real dx_ = 0;

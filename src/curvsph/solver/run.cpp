@@ -218,8 +218,10 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   if (const auto& rr = solver.relax_result())
     log("relaxation: {} steps in {:.2f} s, {} {:.4g} -> {:.4g} (tolerance {})", rr->steps,
         rr->seconds, relax_figure, rr->spread_initial, rr->spread, c.relax.tolerance);
-  if (const auto& rr = solver.relax_result();
-      rr && rr->spread > c.relax.tolerance && o.progress && comm.root() && o.restart.empty()) {
+  if (const auto& rr = solver.relax_result(); rr && c.relax.max_steps > 0 &&
+                                              rr->spread > c.relax.tolerance && o.progress &&
+                                              comm.root() && o.restart.empty()) {
+    // (max_steps = 0 asks for no packing: a case switching its packing off says so.)
     // An unconverged packing starts the run off the scheme's equilibrium where it stopped
     // (with boundary integrals, at the corners and walls: the forces 2 p_i R_i of
     // integrals_boundary.cpp item 2b), so say it rather than leave it in the log.

@@ -1,6 +1,6 @@
 """Plots of `curvsph validate hydrostatic_tank` (Calderon et al. Figs. 9-12): reduced kinetic
 energy and pressure error against t sqrt(g/H) for every run (solid: geometric Shepard factor,
-dashed: volume), the pressure profile against depth at the end, and the particles near the
+dashed: volume, dotted: the mirror-ghost comparison row), the pressure profile against depth at the end, and the particles near the
 right-hand corner at the end (coloured by p - p_hydrostatic)."""
 import csv
 import os
@@ -42,13 +42,14 @@ for field, fname, ylabel in [("kinetic_energy", "kinetic_energy.png", "KE / (M g
     for r in runs:
         d = history(r)
         y = np.maximum(d[field], 1e-14)
-        ls = "-" if r["shepard"] == "geometric" else "--"
+        ls = {"geometric": "-", "ghost": ":"}.get(r["shepard"], "--")
         ax.semilogy(d["reduced_time"], y, ls, color=color(r), lw=1.2, label=label(r))
         if r["unstable"] == "1":
             ax.plot(d["reduced_time"][-1], y[-1], "x", color=color(r), ms=8)
     ax.set_xlabel("t √(g/H)")
     ax.set_ylabel(ylabel)
-    ax.set_title("Hydrostatic tank: solid geometric γ, dashed volume γ (x: failure)")
+    ax.set_title("Hydrostatic tank: solid geometric γ, dashed volume γ, dotted ghosts "
+                 "(x: failure)", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
@@ -80,7 +81,7 @@ fig.tight_layout()
 fig.savefig(os.path.join(out, "pressure_profile.png"), dpi=120)
 plt.close(fig)
 
-# Fig. 9: the right-hand corner at the end, geometric against volume (N ~ 10^4).
+# Fig. 9: the right-hand corner at the end, geometric against volume (N ~ 10^4), and ghosts.
 base = [r for r in runs if r["dx"] == runs[0]["dx"] and r["h_over_dx"] == "2"]
 fig, axes = plt.subplots(1, len(base), figsize=(5 * len(base), 4.2), squeeze=False)
 for ax, r in zip(axes[0], base):
@@ -92,7 +93,8 @@ for ax, r in zip(axes[0], base):
     ax.set_aspect("equal")
     ax.set_xlim(0.75, 1.0)
     ax.set_ylim(0.3, 0.62)
-    ax.set_title(f"{r['shepard']} γ, t√(g/H) = {float(r['t_end_reached']):.1f}")
+    walls = "mirror ghosts" if r["shepard"] == "ghost" else f"{r['shepard']} γ"
+    ax.set_title(f"{walls}, t√(g/H) = {float(r['t_end_reached']):.1f}")
     fig.colorbar(sc, ax=ax, label="(p - ρ0 g (H - y)) / (ρ0 g H)")
 fig.tight_layout()
 fig.savefig(os.path.join(out, "corner.png"), dpi=120)

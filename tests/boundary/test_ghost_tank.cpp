@@ -29,6 +29,9 @@ nlohmann::json run(const YAML::Node& root) {
   RunOptions o;
   o.write_files = false;
   o.progress = false;
+  // One thread: ~5000 short steps; beside another multi-threaded test under `ctest -j 2` on 2
+  // cores, each OpenMP barrier waits for a descheduled thread (measured: minutes, not seconds).
+  o.threads = 1;
   return run_case(read_case(root, "ghost_tank_test"), o);
 }
 

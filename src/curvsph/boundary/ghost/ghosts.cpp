@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
@@ -49,6 +50,15 @@ struct Generator {
 
   using Record = typename GhostSet<D>::Record;
 
+  // The velocity images of one reflection: {the mode's, the free-slip one} (the continuity
+  // equation's, ghosts.hpp); the free-slip image is the mode's own for free_slip walls.
+  std::pair<VecD<D>, VecD<D>> images(const VecD<D>& u, const VecD<D>& uw, const VecD<D>& n,
+                                     double ratio) const {
+    const VecD<D> slip = ghost_velocity<D>(GhostVelocity::free_slip, u, uw, n, 1.0);
+    if (opt.velocity == GhostVelocity::free_slip) return {slip, slip};
+    return {ghost_velocity<D>(opt.velocity, u, uw, n, ratio), slip};
+  }
+
   void emit(std::vector<Record>& out, Index i, std::int32_t wall, const VecD<D>& xg,
             const VecD<D>& ug, const VecD<D>& ug_slip, double beta, double depth, double d,
             const VecD<D>& foot, const VecD<D>& n, std::uint8_t reflections) const {
@@ -78,8 +88,10 @@ struct Generator {
       d = (x - set[r]->foot).dot(n);
       foot = x - d * n;
       const VecD<D> uw = walls[set[r]->wall].motion.velocity_at(foot);
-      u = ghost_velocity<D>(opt.velocity, u, uw, n, 1.0);
+      // For free_slip walls u and u_slip are the same sequence.
       u_slip = ghost_velocity<D>(GhostVelocity::free_slip, u_slip, uw, n, 1.0);
+      u = opt.velocity == GhostVelocity::free_slip ? u_slip
+                                                   : ghost_velocity<D>(opt.velocity, u, uw, n, 1.0);
       x = foot - d * n;
     }
     emit(out, i, set[count - 1]->wall, x, u, u_slip, 1.0, d, d, foot, n,
@@ -117,8 +129,8 @@ struct Generator {
             foot[a] = s == 0 ? lo[a] : hi[a];
             const VecD<D> n = VecD<D>::Unit(a) * (s == 0 ? 1.0 : -1.0);
             const VecD<D> uw = box->motion.velocity_at(foot);
-            emit(out, i, k, foot - d * n, ghost_velocity<D>(opt.velocity, u, uw, n, 1.0),
-                 ghost_velocity<D>(GhostVelocity::free_slip, u, uw, n, 1.0), 1.0, d, d, foot, n, 1);
+            const auto [ug, ug_slip] = images(u, uw, n, 1.0);
+            emit(out, i, k, foot - d * n, ug, ug_slip, 1.0, d, d, foot, n, 1);
             if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k};
           }
         }
@@ -140,10 +152,9 @@ struct Generator {
         continue;
       }
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
-      emit(out, i, k, p.foot - g.depth * p.normal,
-           ghost_velocity<D>(opt.velocity, u, uw, p.normal, g.depth / p.distance),
-           ghost_velocity<D>(GhostVelocity::free_slip, u, uw, p.normal, 1.0), g.beta, g.depth,
-           p.distance, p.foot, p.normal, 1);
+      const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
+      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
+           p.normal, 1);
       if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat) flat[nflat++] = {p.foot, p.normal, k};
     }
 

@@ -168,11 +168,10 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   } catch (const std::invalid_argument& e) {
     throw InputError(c.file_name(), "boundary.shepard", e.what());
   }
-  wall_force_ = c.boundary.wall_force;
   consistent_ = c.boundary.pressure == "consistent";
   tensile_ = c.boundary.pressure == "tensile_control";
   dx_ = static_cast<Real>(c.dx);
-  wall_force_law_ = WallForce(F_.eos.c0, dx_);
+  if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, dx_);
 }
 
 template <int D>
@@ -437,8 +436,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       P.a[i] += blend * inv_g * P.p[i] / P.mass[i] * (c - (2 / si) * wn);
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
-    if (wall_force_ && wall_force_law_.active(wall_dist_[i]))
-      P.a[i] += wall_force_push(walls_, P.x[i], wall_force_law_);
+    if (wall_force_.active(wall_dist_[i])) P.a[i] += wall_force_push(walls_, P.x[i], wall_force_);
   });
 }
 

@@ -68,10 +68,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   ShepardQuadrature quad_;
   GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
   ElementQuadrature<D> wq_;        // Gauss points of the wall terms' W_ib
-  bool wall_force_ = false;
-  WallForce wall_force_law_;
-  bool consistent_ = false;  // boundary.pressure: consistent
-  bool tensile_ = false;     // boundary.pressure: tensile_control (consistent where p_i < 0)
+  WallForce wall_force_;           // range 0 (never active) unless boundary.wall_force
+  bool consistent_ = false;        // boundary.pressure: consistent
+  bool tensile_ = false;           // boundary.pressure: tensile_control (consistent where p_i < 0)
   Real dx_ = 0;
   bool built_ = false;
 

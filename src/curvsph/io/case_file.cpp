@@ -220,16 +220,27 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!root.IsMap()) throw InputError(file, "", "the case file must be a YAML mapping");
   const Keys top(root, file, "");
-  top.allow({"name",       "dimension",
-             "resolution", "domain",
-             "fluids",     "eos",
-             "density",    "gravity",
-             "forcing",    "walls",
-             "boundary",   "setup",
-             "time",       "output",
-             "probes",     "analysis",
-             "initial",    "surface_tension",
-             "parallel",   "artificial_viscosity"});
+  top.allow({"name",
+             "dimension",
+             "resolution",
+             "domain",
+             "fluids",
+             "eos",
+             "density",
+             "gravity",
+             "forcing",
+             "walls",
+             "boundary",
+             "setup",
+             "time",
+             "output",
+             "probes",
+             "analysis",
+             "initial",
+             "surface_tension",
+             "parallel",
+             "artificial_viscosity",
+             "transport_velocity"});
   c.name = top.text("name", path.stem().string());
   const long dim = top.integer("dimension");
   if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
@@ -304,6 +315,20 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
                                             : DensitySpec::Diffusion::fourtakas;
   if (den.has("diffusion_term") && c.density.method == DensitySpec::Method::summation)
     den.fail(den.key("diffusion_term"), "only applies to method: continuity");
+
+  if (top.has("transport_velocity")) {
+    const Keys tv = top.sub("transport_velocity");
+    tv.allow({"background_pressure"});
+    double stiff = 0;  // rho0 c0^2 of the stiffest fluid: Adami et al.'s p_b
+    for (const FluidSpec& f : c.fluids) stiff = std::max(stiff, f.rho0 * c.eos.c0 * c.eos.c0);
+    c.transport_pb = tv.positive("background_pressure", stiff);
+    if (c.density.method != DensitySpec::Method::summation)
+      tv.fail(tv.path(),
+              "needs density.method: summation (the density follows the "
+              "transported positions)");
+    if (c.shifting > 0)
+      tv.fail(tv.path(), "and density.shifting both regularise the particles; use one");
+  }
 
   if (top.has("artificial_viscosity")) {
     const Keys av = top.sub("artificial_viscosity");

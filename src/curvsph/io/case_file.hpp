@@ -101,6 +101,9 @@ struct Case {
   double drive_v0 = 0, drive_tau = 1;
   BoundarySpec boundary;
   double shifting = 0;  // particle shifting coefficient C (0: off); see particle_shifting.hpp
+  // transport_velocity.background_pressure: p_b of the transport-velocity formulation
+  // (physics/transport_velocity.hpp; 0: off)
+  double transport_pb = 0;
   // artificial_viscosity.alpha: the delta-SPH momentum diffusion (physics/artificial_viscosity.hpp;
   // 0: off, the default)
   double artificial_alpha = 0;

@@ -42,6 +42,11 @@ template <int D>
 struct ShiftScratch {
   std::vector<Vec<D>> s, grad_rho;
   std::vector<Mat<D>> grad_v;  // grad_v(a, b) = d v_a / d x_b
+  // Sun et al.'s anti-clumping R of the pair weight (0: the plain gradient of the kernel sum,
+  // as the transport-velocity formulation takes it), and whether the Taylor gradients
+  // grad_rho, grad_v are summed (only the shift carries fields along).
+  Real anti_clumping = Real(0.2);
+  bool taylor = true;
   std::size_t bytes() const {
     return (s.capacity() + grad_rho.capacity()) * sizeof(Vec<D>) +
            grad_v.capacity() * sizeof(Mat<D>);
@@ -50,10 +55,11 @@ struct ShiftScratch {
 
 // Sun et al.'s anti-clumping weight c = 1 + R (W/W(dx))^n (R = 0.2, n = 4) of a pair at r.
 template <int D>
-inline Real shift_pair_weight(const WendlandC2<D>& W, Real r, Real w_dx) {
+inline Real shift_pair_weight(const WendlandC2<D>& W, Real r, Real w_dx, Real R = Real(0.2)) {
+  if (R == 0) return 1;
   const Real ratio = W.value(r) / w_dx;
   const Real r4 = ratio * ratio * ratio * ratio;
-  return 1 + Real(0.2) * r4;
+  return 1 + R * r4;
 }
 
 // For a particle close to a wall of unit normal n (into the fluid): drops the part of the
@@ -76,12 +82,15 @@ void shift_sums(const Particles<D>& P, const CellList<D>& cells, const WendlandC
   auto& S = scratch.s;
   auto& G = scratch.grad_rho;
   auto& Gv = scratch.grad_v;
+  const bool taylor = scratch.taylor;
+  const Real R = scratch.anti_clumping;
   S.resize(P.size());
-  G.resize(P.size());
-  Gv.resize(P.size());
+  G.resize(taylor ? P.size() : 0);
+  Gv.resize(taylor ? P.size() : 0);
   const Real w_dx = W.value(dx);
   parallel_for(rule.touched(P), [&](Index i) {
     S[i] = Vec<D>::Zero();
+    if (!taylor) return;
     G[i] = Vec<D>::Zero();
     Gv[i] = Mat<D>::Zero();
   });
@@ -91,24 +100,26 @@ void shift_sums(const Particles<D>& P, const CellList<D>& cells, const WendlandC
       if (!rule.template computes<M>(P, n, i, j, r)) return;
       const Real rr = std::sqrt(r2);
       const Vec<D> gradW = W.gradient_factor(rr) * r;  // grad_i W_ij
-      const Real c = shift_pair_weight(W, rr, w_dx);
+      const Real c = shift_pair_weight(W, rr, w_dx, R);
+      const bool to_i = rule.template adds_to<M>(i, n), to_j = rule.template adds_to<M>(j, n);
+      const Real Vj = P.mass[j] / P.rho[j], Vi = P.mass[i] / P.rho[i];
+      if (to_i) S[i] += c * Vj * gradW;
+      if (to_j) S[j] -= c * Vi * gradW;
+      if (!taylor) return;
       const Vec<D> g = (P.rho[j] - P.rho[i]) * gradW;
       const Mat<D> gv = (P.v[j] - P.v[i]) * gradW.transpose();
-      if (rule.template adds_to<M>(i, n)) {
-        const Real Vj = P.mass[j] / P.rho[j];
-        S[i] += c * Vj * gradW;
+      if (to_i) {
         G[i] += Vj * g;
         Gv[i].noalias() += Vj * gv;
       }
-      if (rule.template adds_to<M>(j, n)) {
-        const Real Vi = P.mass[i] / P.rho[i];
-        S[j] -= c * Vi * gradW;
+      if (to_j) {
         G[j] += Vi * g;
         Gv[j].noalias() += Vi * gv;
       }
     });
   });
   rule.sum_halo(S);
+  if (!taylor) return;
   rule.sum_halo(G);
   rule.sum_halo(Gv);
 }

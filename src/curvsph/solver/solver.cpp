@@ -135,6 +135,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   dop.domain_max = c.domain_max;
   dop.periodic = c.periodic;
   decomp_.configure(dop);
+  tv_.background_pressure = static_cast<Real>(c.transport_pb);
 }
 
 template <int D>
@@ -153,6 +154,11 @@ void Solver<D>::resort() {
   // [mpi] The build may have indexed halo copies, dropped since (indices >= size()).
   std::erase_if(order_, [n = P_.size()](std::size_t k) { return k >= n; });
   P_.permute(order_);
+  if (tv_.b.size() == order_.size()) {  // b follows its particles to the next drift
+    tv_acc_.resize(order_.size());
+    for (std::size_t k = 0; k < order_.size(); ++k) tv_acc_[k] = tv_.b[order_[k]];
+    tv_.b.swap(tv_acc_);
+  }
 }
 
 template <int D>
@@ -211,6 +217,11 @@ void Solver<D>::compute_rates(Real dt_rho) {
   {
     Stopwatch sw{times_.forces};
     fluid_forces(P_, cells_, W_, F_, pair_, rule);
+    if (tv_.enabled()) {
+      tv_.du.resize(P_.size(), Vec<D>::Zero());
+      decomp_.update_halo(tv_.du);  // [mpi] the pair pass reads du[j]
+      add_transport_stress(P_, cells_, W_, tv_, tv_acc_, rule);
+    }
     add_artificial_viscosity(P_, cells_, W_, Real(case_.artificial_alpha) * W_.h * F_.eos.c0,
                              F_.rho0, rule);
     if (!case_.surface_tension.empty()) {
@@ -230,6 +241,13 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   Stopwatch sw{times_.forces};
   body_forces(P_, F_);
+  if (tv_.enabled()) {
+    // The background-pressure push for the next drift, at these positions (walls prepared).
+    shift_sums(P_, cells_, W_, static_cast<Real>(case_.dx), tv_.sums, rule);
+    const Index n = rule.computed(P_);
+    if (boundary_) boundary_->add_shift_sums(P_, n, static_cast<Real>(case_.dx), tv_.sums);
+    transport_acceleration(P_, n, tv_);
+  }
 }
 
 template <int D>
@@ -246,6 +264,10 @@ void Solver<D>::initialize() {
   resort();
   decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
+  if (tv_.enabled() && decomp_.active())
+    throw InputError(case_.file_name(), "transport_velocity",
+                     "not available with more than one MPI rank (its per-particle state does "
+                     "not migrate yet)");
   const Index owned = decomp_.owned();
   std::vector<Real> rho_set;
   if (!continuity_) rho_set.assign(P_.rho.begin(), P_.rho.begin() + owned);
@@ -278,7 +300,7 @@ std::size_t Solver<D>::bytes_held() const {
     return v.capacity() * sizeof(typename std::decay_t<decltype(v)>::value_type);
   };
   return P_.bytes() + cells_.bytes() + pair_.bytes() + held(grad_rho_) + shift_.bytes() +
-         held(order_);
+         tv_.bytes() + held(tv_acc_) + held(order_);
 }
 
 template <int D>
@@ -304,10 +326,17 @@ void Solver<D>::step(Real dt_cap) {
   const Index n = static_cast<Index>(P_.size());
   {
     Stopwatch sw{times_.integrate};
-    // Kick (v to the half step) and drift (x to the full step).
+    // Kick (v to the half step) and drift (x to the full step), with the transport velocity
+    // v + dt/2 b where the case uses it (physics/transport_velocity.hpp).
+    if (tv_.enabled()) {
+      tv_.b.resize(P_.size(), Vec<D>::Zero());
+      tv_.du.resize(P_.size());
+      parallel_for(n, [&](Index i) { tv_.du[i] = half * tv_.b[i]; });
+    }
+    const Vec<D>* du = tv_.enabled() ? tv_.du.data() : nullptr;
     parallel_for(n, [&](Index i) {
       P_.v[i] += half * P_.a[i];
-      P_.x[i] += dt_ * P_.v[i];
+      P_.x[i] += dt_ * (du ? Vec<D>(P_.v[i] + du[i]) : P_.v[i]);
       cells_.wrap(P_.x[i]);
     });
   }

@@ -16,6 +16,7 @@
 #include "curvsph/physics/pair_factors.hpp"
 #include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
+#include "curvsph/physics/transport_velocity.hpp"
 #include "curvsph/setup/relax.hpp"
 
 namespace curvsph {
@@ -109,6 +110,8 @@ class Solver {
   PairFactors<D> pair_;  // per-particle factors of the pair sums, reused every step
   SurfaceTensionScratch<D> surface_scratch_;
   ShiftScratch<D> shift_;
+  TransportVelocity<D> tv_;     // transport_velocity (off unless the case sets it)
+  std::vector<Vec<D>> tv_acc_;  // scratch of its momentum term
   std::vector<std::size_t> order_;
   // The time is accumulated in double even in the float build: in float, t + dt stops
   // advancing once dt falls below half an ulp of t (3e-8 at t = 0.35), and a step capped to

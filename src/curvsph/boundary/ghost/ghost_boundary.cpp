@@ -156,7 +156,8 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Index s = G_.source[g];
         const Real rr = std::sqrt(r2);
         const Real Vg = G_.beta[g] * P.mass[s] / P.rho[s];
-        sums.s[i] += shift_pair_weight(W_, rr, w_dx) * Vg * W_.gradient_factor(rr) * r;
+        sums.s[i] +=
+            shift_pair_weight(W_, rr, w_dx, sums.anti_clumping) * Vg * W_.gradient_factor(rr) * r;
         if (s == i && G_.reflections[g] == 1 && G_.source_depth[g] < dx && nc < 4)
           close[static_cast<std::size_t>(nc++)] = G_.normal[g].template cast<Real>();
       });

@@ -344,6 +344,21 @@ void throttled_pipe_initial(const Case& c, const YAML::Node& params, const Eos& 
     inv_r3 +=
         cx * std::pow(gap(c.domain_min[0] + (static_cast<double>(i) + 0.5) * cx).half_width(), -3);
   const double q = flux > 0 ? flux : 2 * f.rho0 * c.gravity[0] * lx / (3 * f.viscosity * inv_r3);
+  // Node density of a column's rectangular lattice (cx, dy) continued without end: the mass
+  // rho0 / n makes the summation density start at rho0 in the bulk. rho0 cx dy would start it
+  // at n cx dy rho0 (1.0105 rho0 on a square lattice at h = 1.3 dx), i.e. at a pressure of
+  // ~11 Pa above the eos's p0 (findings.md §7).
+  const WendlandC2<2> W(static_cast<Real>(c.h()));
+  auto lattice_density = [&](double ax, double by) {
+    const long kx = static_cast<long>(std::ceil(W.support / ax)),
+               ky = static_cast<long>(std::ceil(W.support / by));
+    double n = 0;
+    for (long a = -kx; a <= kx; ++a)
+      for (long b = -ky; b <= ky; ++b)
+        n += W.value(static_cast<Real>(
+            std::hypot(static_cast<double>(a) * ax, static_cast<double>(b) * by)));
+    return n;
+  };
   std::vector<Vec2d> pos, vel;
   std::vector<double> vol;
   for (long i = 0; i < nx; ++i) {
@@ -357,7 +372,7 @@ void throttled_pipe_initial(const Case& c, const YAML::Node& params, const Eos& 
     const double dy = (g.hi - g.lo) / static_cast<double>(n);
     for (long k = 0; k < n; ++k) {
       pos.emplace_back(x, g.lo + (static_cast<double>(k) + 0.5) * dy);
-      vol.push_back(cx * dy);
+      vol.push_back(1 / lattice_density(cx, dy));
       // Local Poiseuille profile carrying Q; v_y follows the streamlines y = y_c + eta R.
       const double eta = (pos.back().y() - g.center()) / g.half_width();
       const double u = 0.75 * q / g.half_width() * (1 - eta * eta);

@@ -55,8 +55,10 @@ std::unique_ptr<Analysis<2>> make_throttled_pipe_analysis(const YAML::Node& para
 // to skip most of the viscous spin-up (time scale 4 R^2 / (pi^2 nu) ~ 1 s). Column i sits at x_i =
 // x_min + (i + 1/2) L_x/n_x with n_x = round(L_x/dx); between its walls (channel_gap) it holds n =
 // round(gap/dx) particles at spacing dy = gap/n, the first and last dy/2 from the walls, with mass
-// rho0 (L_x/n_x) dy. A lattice clipped by the curved walls leaves gaps of up to 1.5 dx along them
-// (density deficits near 30 % at t = 0 that push particles through the wall within ~100 steps).
+// rho0 / n_lat, n_lat the node density of the column's lattice (L_x/n_x, dy) continued without
+// end, so that the summation density starts at rho0 away from the walls. A lattice clipped by the
+// curved walls leaves gaps of up to 1.5 dx along them (density deficits near 30 % at t = 0 that
+// push particles through the wall within ~100 steps).
 void throttled_pipe_initial(const Case& c, const YAML::Node& params, const Eos& eos,
                             const std::vector<Real>& rho0, Particles<2>& P);
 

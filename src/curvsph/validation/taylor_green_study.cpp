@@ -29,8 +29,8 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
       "|---|---|---|---|---|---|---|\n";
   for (double dx : dxs) {
     const std::string tag = fmt::format("dx_{}", dx);
-    const std::vector<std::string> sets = {fmt::format("resolution.dx={}", dx),
-                                           "time.end=" + t_end, "output.vtk=false"};
+    const std::vector<std::string> sets = {fmt::format("resolution.dx={}", dx), "time.end=" + t_end,
+                                           "output.vtk=false"};
     Case c = read_case(case_path, sets);
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
@@ -40,8 +40,8 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
     // The comparison: summation density with the transport velocity (physics/
     // transport_velocity.hpp, p_b = rho0 c0^2) and no background pressure in the eos.
     std::vector<std::string> tvf_sets = sets;
-    tvf_sets.insert(tvf_sets.end(), {"density={method: summation}", "eos.p0=0",
-                                     "transport_velocity={}"});
+    tvf_sets.insert(tvf_sets.end(),
+                    {"density={method: summation}", "eos.p0=0", "transport_velocity={}"});
     RunOptions ot = o;
     ot.out_dir = ctx.out_dir / (tag + "_tvf");
     const auto mt = run_case(read_case(case_path, tvf_sets), ot);
@@ -50,8 +50,7 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
     l2s.push_back(l2);
     csv << fmt::format("{},{},{},{:.6g},{:.6g},{:.3f},{:.6g},{:.6g},{:.3f}\n", dx,
                        m["particles"].get<long>(), m["steps"].get<long>(), l2, dr,
-                       m["wall_seconds"].get<double>(), tl2, tdr,
-                       mt["wall_seconds"].get<double>());
+                       m["wall_seconds"].get<double>(), tl2, tdr, mt["wall_seconds"].get<double>());
     table += fmt::format("| {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", dx,
                          m["particles"].get<long>(), m["steps"].get<long>(), l2, dr, tl2, tdr);
     r.metrics[tag + "_l2_velocity_error"] = l2;

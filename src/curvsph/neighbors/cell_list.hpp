@@ -6,11 +6,13 @@
 // periodic image already applied, so physics terms never see the domain topology.
 //
 // build() also keeps a copy of the positions in cell order, one array per axis (sx_). The
-// candidate test of a row then reads contiguous memory and runs without a data-dependent
-// branch: the squared distances of a block of candidates are computed in one loop (SIMD
-// across candidates), the hits are compacted into a small index buffer by a branch-free
-// store, and only the hits reach the caller. With ~85 % of the candidates outside the
-// support (docs/performance.md), the per-candidate branch of a plain scan mispredicts often.
+// symmetric pair sweep gathers the candidates of a cell's half stencil from it once (periodic
+// image applied) and every particle of the cell filters that one contiguous run without a
+// data-dependent branch: the squared distances in one loop (SIMD across candidates), the hits
+// compacted into an index buffer by a branch-free store, and only the hits reach the caller.
+// With ~75-85 % of the candidates outside the support (docs/performance.md), the
+// per-candidate branch of a plain scan mispredicts often, and so do the exits of short loops
+// over each row of cells.
 //
 // for_each_pair() visits every pair within the support once, for the symmetric passes (the
 // caller adds a pair's contribution to both particles: half the distance tests and kernel
@@ -152,6 +154,19 @@ class CellList {
   // is fixed by the cell grid alone, the same for any thread count.
   template <class F>
   void for_each_pair(F&& f) const {
+    for_each_pair_acc<NoSum>(
+        [&](NoSum&, Index i, Index j, const Vec<D>& r, Real r2) { f(i, j, r, r2); },
+        [](Index, const NoSum&) {});
+  }
+
+  // for_each_pair() with the visiting particle's share summed in a local: f(acc, i, j, r, r2)
+  // adds i's term to acc (a value-initialised Acc per visiting particle, which the compiler
+  // keeps in registers) and j's term to j's storage; fin(i, acc) then adds acc to i's once.
+  // The plain form loads and stores i's sums at every pair, and each pair's update of them
+  // waits on the store of the one before. A particle is the visitor of exactly one cell
+  // sweep, so fin runs once per particle; particles without pairs get fin(i, Acc{}).
+  template <class Acc, class F, class Fin>
+  void for_each_pair_acc(F&& f, Fin&& fin) const {
     // One team for the four colours, with the barrier after each colour that is needed
     // anyway: three parallel regions fewer per pass (22 a dam-break step instead of 31).
 #pragma omp parallel
@@ -161,7 +176,7 @@ class CellList {
       const std::vector<int>& tiles = tiles_of_colour_[colour];
       const int nt = static_cast<int>(tiles.size());
 #pragma omp for schedule(dynamic, 1)
-      for (int k = 0; k < nt; ++k) for_each_pair_in_tile(tiles[k], f);
+      for (int k = 0; k < nt; ++k) for_each_pair_in_tile<Acc>(tiles[k], f, fin);
     }
   }
 
@@ -181,6 +196,12 @@ class CellList {
   }
   template <class F>
   void for_each_pair_in_tile(int tile, F& f) const {
+    auto g = [&](NoSum&, Index i, Index j, const Vec<D>& r, Real r2) { f(i, j, r, r2); };
+    auto fin = [](Index, const NoSum&) {};
+    for_each_pair_in_tile<NoSum>(tile, g, fin);
+  }
+  template <class Acc, class F, class Fin>
+  void for_each_pair_in_tile(int tile, F& f, Fin& fin) const {
     std::array<int, D> lo{}, hi{};
     for (int d = 0; d < D; ++d) hi[d] = count_[d];
     const int t[2] = {tile % tile_n_[0], tile / tile_n_[0]};
@@ -192,20 +213,23 @@ class CellList {
     }
     std::array<int, D> c = lo;
     std::array<Range, kMaxRanges> ranges;
+    // Per thread, reused by every pass: no allocation once the largest stencil has been seen.
+    static thread_local Candidates cand;
     while (true) {
       const Index cell = linear(c);
-      if (start_[cell] < start_[cell + 1]) {
+      const Index first = start_[cell];
+      if (first < start_[cell + 1]) {
         const int nr = half_ranges(c, ranges);
-        for (Index s = start_[cell]; s < start_[cell + 1]; ++s) {
+        const Index m = gather(ranges, nr, cand);
+        for (Index s = first; s < start_[cell + 1]; ++s) {
           const Index i = sorted_[s];
           Vec<D> x;
           for (int d = 0; d < D; ++d) x[d] = sx_[d][s];
-          for (int k = 0; k < nr; ++k) {
-            const Range& g = ranges[k];
-            // The own cell's range starts right after i: same-cell pairs once.
-            scan_sorted(x, g.own ? s + 1 : g.begin, g.end, g.shift,
-                        [&](Index sj, const Vec<D>& r, Real r2) { f(i, sorted_[sj], r, r2); });
-          }
+          // The own cell leads the candidates: its pairs start right after i (once each).
+          Acc acc{};
+          scan_candidates(x, cand, s - first + 1, m,
+                          [&](Index j, const Vec<D>& r, Real r2) { f(acc, i, j, r, r2); });
+          fin(i, acc);
         }
       }
       int d = 0;
@@ -236,7 +260,6 @@ class CellList {
 
  private:
   static constexpr int kMaxReach = 2;
-  static constexpr int kBlock = 64;
   // Cells visited along one axis: 2 kMaxReach + 1 in a stencil, or 3 images of at most 2
   // cells where a periodic axis is shorter than 3 supports.
   static constexpr int kMaxAxisVisits = 2 * kMaxReach + 2;
@@ -250,41 +273,81 @@ class CellList {
     bool own = false;  // the range that starts at the visiting particle's own cell
   };
 
-  // Calls g(s, r, r2) for every sorted position s in [begin, end) whose point, shifted by
-  // `shift`, lies within the support of x (r = x - point - shift). The candidate test is a
-  // block filter on the sorted copy of the positions: squared distances of a block in one
-  // branch-free (vectorisable) loop, hits compacted by a branch-free store, an exact test on
-  // the hits.
+  // The candidates of one cell's half stencil, gathered once for all of the cell's particles
+  // into contiguous arrays (periodic image applied, own cell first): each particle then
+  // filters one long run instead of some 13 rows of a few candidates each in 3-D, whose loop
+  // exits (three a row, mispredicted) cost about as much as the candidate tests themselves.
+  struct NoSum {};
+
+  struct Candidates {
+    std::array<std::vector<Real>, D> x;
+    std::vector<Index> j;
+    std::vector<Real> r2;
+    std::vector<int> hits;
+  };
+
+  Index gather(const std::array<Range, kMaxRanges>& ranges, int nr, Candidates& c) const {
+    Index m = 0;
+    for (int k = 0; k < nr; ++k) m += std::max<Index>(0, ranges[k].end - ranges[k].begin);
+    if (static_cast<std::size_t>(m) > c.j.size()) {
+      const std::size_t cap = static_cast<std::size_t>(m) + m / 2;
+      for (int d = 0; d < D; ++d) c.x[d].resize(cap);
+      c.j.resize(cap);
+      c.r2.resize(cap);
+      c.hits.resize(cap);
+    }
+    Index t = 0;
+    auto put = [&](const Range& g) {
+      const Index len = g.end - g.begin;
+      if (len <= 0) return;
+      for (int d = 0; d < D; ++d) {
+        Real* out = c.x[d].data() + t;
+        const Real* in = sx_[d].data() + g.begin;
+        const Real sh = g.shift[d];
+        for (Index k = 0; k < len; ++k) out[k] = in[k] + sh;
+      }
+      std::copy(sorted_.begin() + g.begin, sorted_.begin() + g.end, c.j.begin() + t);
+      t += len;
+    };
+    for (int k = 0; k < nr; ++k)
+      if (ranges[k].own) put(ranges[k]);
+    for (int k = 0; k < nr; ++k)
+      if (!ranges[k].own) put(ranges[k]);
+    return t;
+  }
+
+  // Calls g(j, r, r2) for every candidate t in [begin, end) within the support of x: the
+  // squared distances in one branch-free (vectorisable) loop, the hits compacted by a
+  // branch-free store, an exact test on the hits (the expression of for_each_neighbor, whose
+  // p + shift is what the candidates hold, so decisions and values agree bit for bit).
   template <class G>
-  void scan_sorted(const Vec<D>& x, Index begin, Index end, const Vec<D>& shift, G&& g) const {
-    for (Index b = begin; b < end; b += kBlock) {
-      const int m = static_cast<int>(std::min<Index>(kBlock, end - b));
-      // The test is a filter with a relative margin; the exact test below decides.
-      alignas(64) Real r2b[kBlock];
-      for (int k = 0; k < m; ++k) {
-        Real q = 0;
-        for (int d = 0; d < D; ++d) {
-          const Real rd = x[d] - (sx_[d][b + k] + shift[d]);
-          q += rd * rd;
-        }
-        r2b[k] = q;
+  void scan_candidates(const Vec<D>& x, Candidates& c, Index begin, Index end, G&& g) const {
+    Real* const __restrict r2b = c.r2.data();
+    std::array<const Real*, D> cx;
+    for (int d = 0; d < D; ++d) cx[d] = c.x[d].data();
+    for (Index t = begin; t < end; ++t) {
+      Real q = 0;
+      for (int d = 0; d < D; ++d) {
+        const Real rd = x[d] - cx[d][t];
+        q += rd * rd;
       }
-      int hits[kBlock];
-      int nh = 0;
-      const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
-      for (int k = 0; k < m; ++k) {
-        hits[nh] = k;
-        nh += r2b[k] < filter2;
-      }
-      for (int h = 0; h < nh; ++h) {
-        const Index s = b + hits[h];
-        Vec<D> p;
-        for (int d = 0; d < D; ++d) p[d] = sx_[d][s];
-        // The expression of for_each_neighbor(x, pos, f), so decisions and values agree.
-        const Vec<D> r = x - (p + shift);
-        const Real r2 = r.squaredNorm();
-        if (r2 < support2_) g(s, r, r2);
-      }
+      r2b[t] = q;
+    }
+    int* const __restrict hits = c.hits.data();
+    const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
+    int nh = 0;
+    for (Index t = begin; t < end; ++t) {
+      hits[nh] = static_cast<int>(t);
+      nh += r2b[t] < filter2;
+    }
+    const Index* jj = c.j.data();
+    for (int h = 0; h < nh; ++h) {
+      const Index t = hits[h];
+      Vec<D> p;
+      for (int d = 0; d < D; ++d) p[d] = cx[d][t];
+      const Vec<D> r = x - p;
+      const Real r2 = r.squaredNorm();
+      if (r2 < support2_) g(jj[t], r, r2);
     }
   }
 

@@ -40,12 +40,16 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
   parallel_for(rule.touched(P), [&](Index i) { P.sigma[i] = i < n ? w0 : 0; });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-      if (!rule.template computes<M>(P, n, i, j, r)) return;
-      const Real w = W.value(std::sqrt(r2));
-      if (rule.template adds_to<M>(i, n)) P.sigma[i] += w;
-      if (rule.template adds_to<M>(j, n)) P.sigma[j] += w;
-    });
+    cells.template for_each_pair_acc<Real>(
+        [&](Real& sigma_i, Index i, Index j, const Vec<D>& r, Real r2) {
+          if (!rule.template computes<M>(P, n, i, j, r)) return;
+          const Real w = W.value(std::sqrt(r2));
+          sigma_i += w;
+          if (rule.template adds_to<M>(j, n)) P.sigma[j] += w;
+        },
+        [&](Index i, Real sigma_i) {
+          if (rule.template adds_to<M>(i, n)) P.sigma[i] += sigma_i;
+        });
   });
   rule.sum_halo(P.sigma);
   parallel_for(n, [&](Index i) { P.rho[i] = P.mass[i] * P.sigma[i]; });
@@ -78,25 +82,33 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
   });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-      if (!rule.template computes<M>(P, n, i, j, r)) return;
-      const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
-      const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
-      std::array<Real, K> e;                                   // f r r^T, upper triangle
-      int k = 0;
-      for (int a = 0; a < D; ++a)
-        for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
-      if (rule.template adds_to<M>(i, n)) {
-        const Real Vj = V[j];
-        grad_rho[i] += Vj * g;
-        for (k = 0; k < K; ++k) A[i * K + k] += Vj * e[k];
-      }
-      if (rule.template adds_to<M>(j, n)) {
-        const Real Vi = V[i];
-        grad_rho[j] += Vi * g;
-        for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
-      }
-    });
+    struct Sums {  // i's share of g_i and of the upper triangle of A_i
+      Vec<D> g = Vec<D>::Zero();
+      std::array<Real, K> a{};
+    };
+    cells.template for_each_pair_acc<Sums>(
+        [&](Sums& sum_i, Index i, Index j, const Vec<D>& r, Real r2) {
+          if (!rule.template computes<M>(P, n, i, j, r)) return;
+          const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
+          const Vec<D> g = (P.rho[j] - P.rho[i]) * fr;             // same for i and j
+          std::array<Real, K> e;                                   // f r r^T, upper triangle
+          int k = 0;
+          for (int a = 0; a < D; ++a)
+            for (int b = a; b < D; ++b) e[k++] = fr[a] * r[b];
+          const Real Vj = V[j];
+          sum_i.g += Vj * g;
+          for (k = 0; k < K; ++k) sum_i.a[k] += Vj * e[k];
+          if (rule.template adds_to<M>(j, n)) {
+            const Real Vi = V[i];
+            grad_rho[j] += Vi * g;
+            for (k = 0; k < K; ++k) A[j * K + k] += Vi * e[k];
+          }
+        },
+        [&](Index i, const Sums& sum_i) {
+          if (!rule.template adds_to<M>(i, n)) return;
+          grad_rho[i] += sum_i.g;
+          for (int k = 0; k < K; ++k) A[i * K + k] += sum_i.a[k];
+        });
   });
   rule.sum_halo(grad_rho);
   if (rule.halo) rule.halo->sum(A, K);
@@ -169,16 +181,20 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
   parallel_for(rule.touched(P), [&](Index i) { P.drho[i] = 0; });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    cells.for_each_pair([&](Index i, Index j, const Vec<D>& r, Real r2) {
-      if (!rule.template computes<M>(P, n, i, j, r)) return;
-      const Real f = W.gradient_factor(std::sqrt(r2));
-      const Real d = f * (P.v[i] - P.v[j]).dot(r);
-      Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
-      if (G) psi_r -= (G[i] + G[j]).dot(r);
-      const Real q = dhc * f * psi_r;
-      if (rule.template adds_to<M>(i, n)) P.drho[i] += V[j] * (P.rho[i] * d + q);
-      if (rule.template adds_to<M>(j, n)) P.drho[j] += V[i] * (P.rho[j] * d - q);
-    });
+    cells.template for_each_pair_acc<Real>(
+        [&](Real& drho_i, Index i, Index j, const Vec<D>& r, Real r2) {
+          if (!rule.template computes<M>(P, n, i, j, r)) return;
+          const Real f = W.gradient_factor(std::sqrt(r2));
+          const Real d = f * (P.v[i] - P.v[j]).dot(r);
+          Real psi_r = -2 * (P.rho[j] - P.rho[i] + Real(0.5) * (P.rho[i] + P.rho[j]) * k.dot(r));
+          if (G) psi_r -= (G[i] + G[j]).dot(r);
+          const Real q = dhc * f * psi_r;
+          drho_i += V[j] * (P.rho[i] * d + q);
+          if (rule.template adds_to<M>(j, n)) P.drho[j] += V[i] * (P.rho[j] * d - q);
+        },
+        [&](Index i, Real drho_i) {
+          if (rule.template adds_to<M>(i, n)) P.drho[i] += drho_i;
+        });
   });
   rule.sum_halo(P.drho);
 }

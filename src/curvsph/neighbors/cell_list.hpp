@@ -297,17 +297,16 @@ class CellList {
       c.hits.resize(cap);
     }
     Index t = 0;
+    std::array<Real*, D> out;
+    for (int d = 0; d < D; ++d) out[d] = c.x[d].data();
+    Index* const out_j = c.j.data();
+    // One loop over a row's candidates for every array (rows hold a few dozen: each loop
+    // exit is a likely misprediction, and a library copy an indirect call).
     auto put = [&](const Range& g) {
-      const Index len = g.end - g.begin;
-      if (len <= 0) return;
-      for (int d = 0; d < D; ++d) {
-        Real* out = c.x[d].data() + t;
-        const Real* in = sx_[d].data() + g.begin;
-        const Real sh = g.shift[d];
-        for (Index k = 0; k < len; ++k) out[k] = in[k] + sh;
+      for (Index s = g.begin; s < g.end; ++s, ++t) {
+        for (int d = 0; d < D; ++d) out[d][t] = sx_[d][s] + g.shift[d];
+        out_j[t] = sorted_[s];
       }
-      std::copy(sorted_.begin() + g.begin, sorted_.begin() + g.end, c.j.begin() + t);
-      t += len;
     };
     for (int k = 0; k < nr; ++k)
       if (ranges[k].own) put(ranges[k]);

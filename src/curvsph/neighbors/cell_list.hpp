@@ -317,8 +317,11 @@ class CellList {
 
   // Calls g(j, r, r2) for every candidate t in [begin, end) within the support of x: the
   // squared distances in one branch-free (vectorisable) loop, the hits compacted by a
-  // branch-free store, an exact test on the hits (the expression of for_each_neighbor, whose
-  // p + shift is what the candidates hold, so decisions and values agree bit for bit).
+  // branch-free store. The candidates hold p + shift, so r and r2 are the bits of
+  // for_each_neighbor's x - (p + shift) and its squaredNorm ((0 + r_0^2) + r_1^2 + ..., the
+  // same sum) unless the compiler contracts one of them into FMAs (-march with FMA); then a
+  // pair at the support's edge may be decided differently, where W and its gradient vanish.
+  // So the filter is the exact test, and its r2 is handed on.
   template <class G>
   void scan_candidates(const Vec<D>& x, Candidates& c, Index begin, Index end, G&& g) const {
     Real* const __restrict r2b = c.r2.data();
@@ -333,20 +336,17 @@ class CellList {
       r2b[t] = q;
     }
     int* const __restrict hits = c.hits.data();
-    const Real filter2 = support2_ * (1 + Real(64) * std::numeric_limits<Real>::epsilon());
     int nh = 0;
     for (Index t = begin; t < end; ++t) {
       hits[nh] = static_cast<int>(t);
-      nh += r2b[t] < filter2;
+      nh += r2b[t] < support2_;
     }
     const Index* jj = c.j.data();
     for (int h = 0; h < nh; ++h) {
       const Index t = hits[h];
-      Vec<D> p;
-      for (int d = 0; d < D; ++d) p[d] = cx[d][t];
-      const Vec<D> r = x - p;
-      const Real r2 = r.squaredNorm();
-      if (r2 < support2_) g(jj[t], r, r2);
+      Vec<D> r;
+      for (int d = 0; d < D; ++d) r[d] = x[d] - cx[d][t];
+      g(jj[t], r, r2b[t]);
     }
   }
 

@@ -154,19 +154,17 @@ class CellList {
   // is fixed by the cell grid alone, the same for any thread count.
   template <class F>
   void for_each_pair(F&& f) const {
-    for_each_pair_acc<NoSum>(
-        [&](NoSum&, Index i, Index j, const Vec<D>& r, Real r2) { f(i, j, r, r2); },
-        [](Index, const NoSum&) {});
+    for_each_pair_acc(NoSum{}, without_sum(f), [](Index, NoSum) {});
   }
 
   // for_each_pair() with the visiting particle's share summed in a local: f(acc, i, j, r, r2)
-  // adds i's term to acc (a value-initialised Acc per visiting particle, which the compiler
-  // keeps in registers) and j's term to j's storage; fin(i, acc) then adds acc to i's once.
+  // adds i's term to acc (a copy of `zero` per visiting particle, which the compiler keeps in
+  // registers) and j's term to j's storage; fin(i, acc) then adds acc to i's once.
   // The plain form loads and stores i's sums at every pair, and each pair's update of them
   // waits on the store of the one before. A particle is the visitor of exactly one cell
-  // sweep, so fin runs once per particle; particles without pairs get fin(i, Acc{}).
+  // sweep, so fin runs once per particle; particles without pairs get fin(i, zero).
   template <class Acc, class F, class Fin>
-  void for_each_pair_acc(F&& f, Fin&& fin) const {
+  void for_each_pair_acc(const Acc& zero, F&& f, Fin&& fin) const {
     // One team for the four colours, with the barrier after each colour that is needed
     // anyway: three parallel regions fewer per pass (22 a dam-break step instead of 31).
 #pragma omp parallel
@@ -176,7 +174,7 @@ class CellList {
       const std::vector<int>& tiles = tiles_of_colour_[colour];
       const int nt = static_cast<int>(tiles.size());
 #pragma omp for schedule(dynamic, 1)
-      for (int k = 0; k < nt; ++k) for_each_pair_in_tile<Acc>(tiles[k], f, fin);
+      for (int k = 0; k < nt; ++k) for_each_pair_in_tile(tiles[k], zero, f, fin);
     }
   }
 
@@ -196,12 +194,12 @@ class CellList {
   }
   template <class F>
   void for_each_pair_in_tile(int tile, F& f) const {
-    auto g = [&](NoSum&, Index i, Index j, const Vec<D>& r, Real r2) { f(i, j, r, r2); };
-    auto fin = [](Index, const NoSum&) {};
-    for_each_pair_in_tile<NoSum>(tile, g, fin);
+    auto g = without_sum(f);
+    auto fin = [](Index, NoSum) {};
+    for_each_pair_in_tile(tile, NoSum{}, g, fin);
   }
   template <class Acc, class F, class Fin>
-  void for_each_pair_in_tile(int tile, F& f, Fin& fin) const {
+  void for_each_pair_in_tile(int tile, const Acc& zero, F& f, Fin& fin) const {
     std::array<int, D> lo{}, hi{};
     for (int d = 0; d < D; ++d) hi[d] = count_[d];
     const int t[2] = {tile % tile_n_[0], tile / tile_n_[0]};
@@ -213,8 +211,7 @@ class CellList {
     }
     std::array<int, D> c = lo;
     std::array<Range, kMaxRanges> ranges;
-    // Per thread, reused by every pass: no allocation once the largest stencil has been seen.
-    static thread_local Candidates cand;
+    Candidates& cand = candidates();
     while (true) {
       const Index cell = linear(c);
       const Index first = start_[cell];
@@ -226,7 +223,7 @@ class CellList {
           Vec<D> x;
           for (int d = 0; d < D; ++d) x[d] = sx_[d][s];
           // The own cell leads the candidates: its pairs start right after i (once each).
-          Acc acc{};
+          Acc acc = zero;
           scan_candidates(x, cand, s - first + 1, m,
                           [&](Index j, const Vec<D>& r, Real r2) { f(acc, i, j, r, r2); });
           fin(i, acc);
@@ -273,18 +270,29 @@ class CellList {
     bool own = false;  // the range that starts at the visiting particle's own cell
   };
 
+  // The accumulator of the passes without one (for_each_pair), and their pair callback.
+  struct NoSum {};
+  template <class F>
+  static auto without_sum(F& f) {
+    return [&f](NoSum&, Index i, Index j, const Vec<D>& r, Real r2) { f(i, j, r, r2); };
+  }
+
   // The candidates of one cell's half stencil, gathered once for all of the cell's particles
   // into contiguous arrays (periodic image applied, own cell first): each particle then
   // filters one long run instead of some 13 rows of a few candidates each in 3-D, whose loop
   // exits (three a row, mispredicted) cost about as much as the candidate tests themselves.
-  struct NoSum {};
-
   struct Candidates {
     std::array<std::vector<Real>, D> x;
     std::vector<Index> j;
     std::vector<Real> r2;
     std::vector<int> hits;
   };
+  // One buffer per thread, shared by every pass and every list of this dimension: no
+  // allocation once the largest stencil has been seen (a few KB; not in bytes()).
+  static Candidates& candidates() {
+    static thread_local Candidates c;
+    return c;
+  }
 
   Index gather(const std::array<Range, kMaxRanges>& ranges, int nr, Candidates& c) const {
     Index m = 0;

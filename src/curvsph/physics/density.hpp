@@ -40,7 +40,8 @@ void density_summation(Particles<D>& P, const CellList<D>& cells, const Wendland
   parallel_for(rule.touched(P), [&](Index i) { P.sigma[i] = i < n ? w0 : 0; });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    cells.template for_each_pair_acc<Real>(
+    cells.for_each_pair_acc(
+        Real(0),
         [&](Real& sigma_i, Index i, Index j, const Vec<D>& r, Real r2) {
           if (!rule.template computes<M>(P, n, i, j, r)) return;
           const Real w = W.value(std::sqrt(r2));
@@ -86,7 +87,8 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
       Vec<D> g = Vec<D>::Zero();
       std::array<Real, K> a{};
     };
-    cells.template for_each_pair_acc<Sums>(
+    cells.for_each_pair_acc(
+        Sums{},
         [&](Sums& sum_i, Index i, Index j, const Vec<D>& r, Real r2) {
           if (!rule.template computes<M>(P, n, i, j, r)) return;
           const Vec<D> fr = r * W.gradient_factor(std::sqrt(r2));  // grad_i W_ij
@@ -181,7 +183,8 @@ void continuity_rate(Particles<D>& P, const CellList<D>& cells, const WendlandC2
   parallel_for(rule.touched(P), [&](Index i) { P.drho[i] = 0; });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    cells.template for_each_pair_acc<Real>(
+    cells.for_each_pair_acc(
+        Real(0),
         [&](Real& drho_i, Index i, Index j, const Vec<D>& r, Real r2) {
           if (!rule.template computes<M>(P, n, i, j, r)) return;
           const Real f = W.gradient_factor(std::sqrt(r2));

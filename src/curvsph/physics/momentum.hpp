@@ -46,22 +46,20 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
   parallel_for(rule.touched(P), [&](Index i) { P.a[i] = Vec<D>::Zero(); });
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    struct Sum {  // i's share of m_i a_i
-      Vec<D> a = Vec<D>::Zero();
-    };
-    cells.template for_each_pair_acc<Sum>(
-        [&](Sum& sum_i, Index i, Index j, const Vec<D>& r, Real r2) {
+    cells.for_each_pair_acc(
+        Vec<D>(Vec<D>::Zero()),  // i's share of m_i a_i
+        [&](Vec<D>& a_i, Index i, Index j, const Vec<D>& r, Real r2) {
           if (!rule.template computes<M>(P, n, i, j, r)) return;
           const Real f = W.gradient_factor(std::sqrt(r2));
           const Real mu_i = mu[i], mu_j = mu[j];
           const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
           const Vec<D> X =
               f * (mu_ij * (inv_s2[j] + inv_s2[i]) * (P.v[i] - P.v[j]) - (p_s2[j] + p_s2[i]) * r);
-          sum_i.a += X;
+          a_i += X;
           if (rule.template adds_to<M>(j, n)) P.a[j] -= X;
         },
-        [&](Index i, const Sum& sum_i) {
-          if (rule.template adds_to<M>(i, n)) P.a[i] += sum_i.a;
+        [&](Index i, const Vec<D>& a_i) {
+          if (rule.template adds_to<M>(i, n)) P.a[i] += a_i;
         });
   });
   rule.sum_halo(P.a);

@@ -14,6 +14,16 @@ void parallel_for(Index n, F&& f) {
   for (Index i = 0; i < n; ++i) f(i);
 }
 
+// parallel_for() for loops whose work sits in a few stretches of [0, n) (the particles near
+// walls, in cell order; the boundary elements with fluid around them): chunks are handed out
+// as threads free up, where a static split would give one thread most of the work. f(i)
+// must write only index i's results, so results do not depend on the schedule.
+template <class F>
+void parallel_for_balanced(Index n, F&& f, int chunk = 256) {
+#pragma omp parallel for schedule(dynamic, chunk)
+  for (Index i = 0; i < n; ++i) f(i);
+}
+
 // Max-reduction of f(i) over [0, n).
 template <class F>
 Real parallel_max(Index n, Real init, F&& f) {

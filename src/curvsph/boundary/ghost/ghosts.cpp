@@ -208,9 +208,12 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     const int T = omp_get_num_threads();
     // Contiguous blocks in thread order: concatenating the blocks keeps particle order.
     const Index begin = n * t / T, end = n * (t + 1) / T;
-    auto& buf = thread_ghosts_[t];
-    auto& pen = thread_penetrated_[t];
-    auto& nor = thread_no_root_[t];
+    // The buffers are moved out for the loop (capacity kept) and back after it: the vectors'
+    // own pointers sit side by side in thread_ghosts_ etc., and a push_back through a
+    // reference writes that shared cache line for every ghost, bouncing it between the cores.
+    auto buf = std::move(thread_ghosts_[t]);
+    auto pen = std::move(thread_penetrated_[t]);
+    auto nor = std::move(thread_no_root_[t]);
     buf.clear();
     pen.clear();
     nor.clear();
@@ -219,6 +222,9 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
       if (p) pen.push_back(i);
       if (r) nor.push_back(i);
     }
+    thread_ghosts_[t] = std::move(buf);
+    thread_penetrated_[t] = std::move(pen);
+    thread_no_root_[t] = std::move(nor);
 #pragma omp barrier
 #pragma omp single
     {
@@ -242,7 +248,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
       reflections.resize(m);
     }
     std::size_t o = offsets_[t];
-    for (const Record& r : buf) {
+    for (const Record& r : thread_ghosts_[t]) {
       x[o] = r.x;
       v[o] = r.v;
       if (!v_slip.empty()) v_slip[o] = r.v_slip;

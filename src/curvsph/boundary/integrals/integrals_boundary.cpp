@@ -257,7 +257,10 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
 #pragma omp single
     thread_pairs_.resize(static_cast<std::size_t>(omp_get_num_threads()));
     const int thread = omp_get_thread_num();
-    std::vector<Pair>& buf = thread_pairs_[static_cast<std::size_t>(thread)];
+    // The buffer is moved out for the loop (capacity kept) and back after it: the vectors'
+    // own pointers sit side by side in thread_pairs_, and a push_back through a reference
+    // writes the shared cache line for every pair, bouncing it between the cores.
+    std::vector<Pair> buf = std::move(thread_pairs_[static_cast<std::size_t>(thread)]);
     buf.clear();
     double gamma_seconds = 0;  // this thread's time in the Shepard factor
     // Dynamic schedule: the Shepard factor costs only near walls, and particles are sorted by
@@ -349,6 +352,7 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
       gamma_[i] = g;
       if (timed) gamma_seconds += omp_get_wtime() - t0;
     }
+    thread_pairs_[static_cast<std::size_t>(thread)] = std::move(buf);
 #pragma omp atomic
     shepard_seconds_ += gamma_seconds / omp_get_num_threads();
   }
@@ -374,7 +378,9 @@ void IntegralsBoundary<D>::check_prepared(const Particles<D>& P) const {
 template <int D>
 void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
   check_prepared(P);
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+  // Balanced: the wall sums cost only near walls (the particles of a tank's floor are one
+  // stretch of the cell order).
+  parallel_for_balanced(static_cast<Index>(P.size()), [&](Index i) {
     Real wall = 0;
     for (const Pair& q : pairs_of(i)) {
       wall += (P.v[i] - eu_[q.b]).dot(en_[q.b]) * q.w * ea_[q.b];
@@ -388,7 +394,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
   check_prepared(P);
   // Wall pressure of every element with fluid around it (item 3 of the header comment).
   const Vec<D> g = F_.gravity;
-  parallel_for(static_cast<Index>(ex_.size()), [&](Index b) {
+  parallel_for_balanced(static_cast<Index>(ex_.size()), [&](Index b) {
     if (!active_[b]) {  // no particle within 2h: den would be 0 (prepare())
       p_wall_[b] = 0;
       return;
@@ -402,7 +408,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     p_wall_[b] = den > 0 ? num / den : 0;
   });
   const Real dn_min = Real(0.5) * dx_;
-  parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+  parallel_for_balanced(static_cast<Index>(P.size()), [&](Index i) {
     const Real inv_g = 1 / gamma_[i];
     P.a[i] *= inv_g;
     if (!near_[i]) return;

@@ -150,6 +150,7 @@ void check_support(double h) {
   EXPECT_EQ(W.gradient_factor(2 * h), 0.0);
   for (double f : {1.0000001, 1.5, 3.0, 1e6}) {
     EXPECT_EQ(W.value(2 * h * f), 0.0);
+    EXPECT_FALSE(std::signbit(W.value(2 * h * f)));  // +0: sums stay sign-exact
     EXPECT_EQ(W.derivative(2 * h * f), 0.0);
     EXPECT_EQ(W.gradient_factor(2 * h * f), 0.0);
   }
@@ -174,6 +175,19 @@ TEST(Kernel, CompactSupport2D) {
 }
 TEST(Kernel, CompactSupport3D) {
   check_support<3>(0.013);
+}
+
+// The bit select behind the branchless kernel: the value itself, or +0.
+TEST(Kernel, KeepIfSelectsValueOrPositiveZero) {
+  EXPECT_EQ(keep_if(true, -2.5), -2.5);
+  EXPECT_EQ(keep_if(false, -2.5), 0.0);
+  EXPECT_FALSE(std::signbit(keep_if(false, -2.5)));
+  EXPECT_EQ(keep_if(true, 1.25f), 1.25f);
+  EXPECT_EQ(keep_if(false, -1.25f), 0.0f);
+  EXPECT_FALSE(std::signbit(keep_if(false, -1.25f)));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(keep_if(true, nan)));
+  EXPECT_EQ(keep_if(false, nan), 0.0);
 }
 
 TEST(Kernel, ValueMatchesDesignFormula) {

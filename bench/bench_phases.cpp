@@ -6,7 +6,7 @@
 // Counter particles_per_second = particles processed per wall-clock second (UseRealTime: the
 // loops are OpenMP-parallel). Ratios between phases are what to read; absolute rates depend
 // on the machine and its load.
-//   build/curvsph_bench --benchmark_filter=Phase --benchmark_min_time=0.2s
+//   build/curvsph_bench --benchmark_filter=Phase --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 #include <yaml-cpp/yaml.h>
 

@@ -6,7 +6,6 @@
 // Wendland are this kernel.
 #include <numbers>
 
-#include "curvsph/core/branchless.hpp"
 #include "curvsph/core/types.hpp"
 
 namespace curvsph {
@@ -30,13 +29,10 @@ struct WendlandC2 {
   }
 
   // W(r); zero for r >= 2h.
-  // Without a branch (core/branchless.hpp): where r is as likely outside the support as
-  // inside (the Gauss points of boundary elements near the support's edge) a branch is
-  // mostly mispredicted. t is set to 0 by the test on r, not clamped at 0: r * inv_h can
-  // round to just below 2 at r = 2h, and W must be exactly 0 for r >= 2h.
   Real value(Real r) const {
+    if (r >= support) return 0;  // exact: r * inv_h can round to just below 2 at r = 2h
     const Real q = r * inv_h;
-    const Real t = keep_if(r < support, 1 - Real(0.5) * q);
+    const Real t = 1 - Real(0.5) * q;
     const Real t2 = t * t;
     return alpha * t2 * t2 * (2 * q + 1);
   }

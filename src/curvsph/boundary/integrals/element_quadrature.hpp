@@ -24,8 +24,6 @@
 // 2 Gauss points; triangles by the 3-point rule of degree 2 at (2/3, 1/6, 1/6), the fourth point
 // with weight 0. Weights are fractions of the element's area (sum 1): the area itself stays
 // the element's own A_b.
-#include <array>
-#include <cmath>
 #include <vector>
 
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
@@ -44,12 +42,9 @@ struct ElementQuadrature {
 
   // (1/A_b) int_b W(|x - y|) dS_y with r = x - x_b (periodic image applied by the caller).
   Real mean_kernel(const WendlandC2<D>& W, std::size_t b, const Vec<D>& r) const {
-    // Distances first, then the kernel values: the square roots wait on nothing but r.
-    const std::size_t k0 = b * kPoints;
-    std::array<Real, kPoints> s;
-    for (int q = 0; q < kPoints; ++q) s[q] = std::sqrt((r - offset[k0 + q]).squaredNorm());
     Real w = 0;
-    for (int q = 0; q < kPoints; ++q) w += weight[k0 + q] * W.value(s[q]);
+    const std::size_t k0 = b * kPoints;
+    for (int q = 0; q < kPoints; ++q) w += weight[k0 + q] * W.value((r - offset[k0 + q]).norm());
     return w;
   }
 };

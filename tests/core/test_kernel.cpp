@@ -177,19 +177,6 @@ TEST(Kernel, CompactSupport3D) {
   check_support<3>(0.013);
 }
 
-// The bit select behind the branchless kernel: the value itself, or +0.
-TEST(Kernel, KeepIfSelectsValueOrPositiveZero) {
-  EXPECT_EQ(keep_if(true, -2.5), -2.5);
-  EXPECT_EQ(keep_if(false, -2.5), 0.0);
-  EXPECT_FALSE(std::signbit(keep_if(false, -2.5)));
-  EXPECT_EQ(keep_if(true, 1.25f), 1.25f);
-  EXPECT_EQ(keep_if(false, -1.25f), 0.0f);
-  EXPECT_FALSE(std::signbit(keep_if(false, -1.25f)));
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_TRUE(std::isnan(keep_if(true, nan)));
-  EXPECT_EQ(keep_if(false, nan), 0.0);
-}
-
 TEST(Kernel, ValueMatchesDesignFormula) {
   for (double h : {0.1, 1.3}) {
     const WendlandC2<2> W2(h);

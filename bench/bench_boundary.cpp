@@ -17,6 +17,7 @@
 
 #include <memory>
 
+#include "bench_report.hpp"
 #include "curvsph/boundary/boundary_model.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/solver.hpp"
@@ -58,20 +59,13 @@ BoundaryState<2>& couette() {
   return s;
 }
 
-void report(benchmark::State& state, std::size_t n) {
-  state.counters["particles"] = static_cast<double>(n);
-  state.counters["particles_per_second"] =
-      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
-}
-
 void BM_PhaseBoundaryIntegralsPrepass(benchmark::State& state) {
   auto& s = dam_break();
   for (auto _ : state) {
     s.model->prepare(s.P, 0);
     benchmark::ClobberMemory();
   }
-  report(state, s.P.size());
+  report_particles(state, s.P.size());
 }
 
 void BM_PhaseBoundaryIntegralsWallTerms(benchmark::State& state) {
@@ -87,7 +81,7 @@ void BM_PhaseBoundaryIntegralsWallTerms(benchmark::State& state) {
     s.model->add_accelerations(P);
     benchmark::DoNotOptimize(P.a.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseBoundaryGhostPrepass(benchmark::State& state) {
@@ -96,7 +90,7 @@ void BM_PhaseBoundaryGhostPrepass(benchmark::State& state) {
     s.model->prepare(s.P, 0);
     benchmark::ClobberMemory();
   }
-  report(state, s.P.size());
+  report_particles(state, s.P.size());
 }
 
 BENCHMARK(BM_PhaseBoundaryIntegralsPrepass)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -12,6 +12,7 @@
 
 #include <memory>
 
+#include "bench_report.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
@@ -47,13 +48,6 @@ BoxState& box() {
   return s;
 }
 
-void report(benchmark::State& state, std::size_t n) {
-  state.counters["particles"] = static_cast<double>(n);
-  state.counters["particles_per_second"] =
-      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
-}
-
 void BM_PhaseNeighbors(benchmark::State& state) {
   auto& s = *box().solver;
   CellList<3> cells = s.cells();
@@ -61,7 +55,7 @@ void BM_PhaseNeighbors(benchmark::State& state) {
     cells.build(s.particles().x);
     benchmark::DoNotOptimize(cells.sorted().data());
   }
-  report(state, s.particles().size());
+  report_particles(state, s.particles().size());
 }
 
 void BM_PhaseDensitySummation(benchmark::State& state) {
@@ -71,7 +65,7 @@ void BM_PhaseDensitySummation(benchmark::State& state) {
     density_summation(P, s.cells(), s.kernel());
     benchmark::DoNotOptimize(P.rho.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseDensityGradient(benchmark::State& state) {
@@ -83,7 +77,7 @@ void BM_PhaseDensityGradient(benchmark::State& state) {
     renormalised_density_gradient(P, s.cells(), s.kernel(), grad, pf);
     benchmark::DoNotOptimize(grad.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseContinuityRate(benchmark::State& state) {
@@ -97,7 +91,7 @@ void BM_PhaseContinuityRate(benchmark::State& state) {
     continuity_rate(P, s.cells(), s.kernel(), dhc, &grad, pf);
     benchmark::DoNotOptimize(P.drho.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseFluidForces(benchmark::State& state) {
@@ -108,7 +102,7 @@ void BM_PhaseFluidForces(benchmark::State& state) {
     fluid_forces(P, s.cells(), s.kernel(), s.fluid(), pf);
     benchmark::DoNotOptimize(P.a.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseIntegrate(benchmark::State& state) {
@@ -123,7 +117,7 @@ void BM_PhaseIntegrate(benchmark::State& state) {
     });
     benchmark::DoNotOptimize(P.x.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 void BM_PhaseResort(benchmark::State& state) {
@@ -135,7 +129,7 @@ void BM_PhaseResort(benchmark::State& state) {
     P.permute(order);
     benchmark::DoNotOptimize(P.x.data());
   }
-  report(state, P.size());
+  report_particles(state, P.size());
 }
 
 BENCHMARK(BM_PhaseNeighbors)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -397,5 +397,17 @@ TEST_F(CaseFileOnDisk, UnstableInitialStateExitsWith3AndLeavesSnapshot) {
   EXPECT_TRUE(fs::exists(out / "particles_unstable.vtp")) << err_;
 }
 
+// With the periodic VTK output turned off the unstable state is still written (and only it).
+TEST_F(CaseFileOnDisk, UnstableRunWithVtkOffStillLeavesSnapshot) {
+  const fs::path tg = fs::path(CURVSPH_SOURCE_DIR) / "cases" / "taylor_green_2d.yaml";
+  const fs::path out = dir_ / "out";
+  const int code = run("run " + tg.string() + " --out " + out.string() +
+                       " --quiet --threads 1 --set eos.c0=0.1 --set resolution.dx=0.05"
+                       " --set output.vtk=false");
+  EXPECT_EQ(code, 3) << err_ << out_;
+  EXPECT_TRUE(fs::exists(out / "particles_unstable.vtp")) << err_;
+  EXPECT_FALSE(fs::exists(out / "particles_000000.vtp"));
+}
+
 }  // namespace
 }  // namespace curvsph

@@ -151,8 +151,11 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
 
   io::PvdSeries series(o.out_dir / "series.pvd");
   int snapshot = 0;
+  // A named snapshot (the state of an unstable run) is written even with output.vtk off:
+  // DESIGN.md §3 promises an unstable run's last VTK snapshot, and studies that turn the
+  // periodic output off are where a blow-up is otherwise left without one.
   auto write_snapshot = [&](const std::string& name) {
-    if (!o.write_files || !c.write_vtk) return;
+    if (!o.write_files || (!c.write_vtk && name.empty())) return;
     const auto t0 = std::chrono::steady_clock::now();
     const int index = snapshot;
     const std::string file = name.empty() ? fmt::format("particles_{:06d}.vtp", snapshot++) : name;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/analysis/channel_flows.hpp"
 #include "curvsph/analysis/couette_analysis.hpp"
 #include "curvsph/core/error.hpp"
@@ -23,12 +24,7 @@ namespace {
 const std::filesystem::path kCases = std::filesystem::path(CURVSPH_SOURCE_DIR) / "cases";
 
 nlohmann::json run_quiet(const std::string& file, const std::vector<std::string>& overrides) {
-  const Case c = read_case(kCases / file, overrides);
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  o.threads = 2;
-  return run_case(c, o);
+  return test::run_quiet(read_case(kCases / file, overrides), 2);
 }
 
 TEST(CouetteProfile, BarkerEq24HandValues) {

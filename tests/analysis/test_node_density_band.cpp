@@ -10,6 +10,7 @@
 #include <limits>
 #include <numeric>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/analysis/node_density.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -203,10 +204,7 @@ output: {vtk: false}
 analysis: {node_density: {}}
 )"),
                            "band_disk.yaml");
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(c, o);
+  const auto m = test::run_quiet(c);
   const long np = m["particles"];
   EXPECT_EQ(m["node_density_ghosts_density_preserving"].get<long>(), np);
   EXPECT_EQ(m["node_density_ghosts_mirror"].get<long>(), np);

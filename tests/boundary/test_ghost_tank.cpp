@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../support/bi_tank.hpp"
+#include "../support/quiet_run.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
@@ -26,13 +27,9 @@ YAML::Node ghost_tank(const std::string& ghost_pressure) {
 }
 
 nlohmann::json run(const YAML::Node& root) {
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
   // One thread: ~5000 short steps; beside another multi-threaded test under `ctest -j 2` on 2
   // cores, each OpenMP barrier waits for a descheduled thread (measured: minutes, not seconds).
-  o.threads = 1;
-  return run_case(read_case(root, "ghost_tank_test"), o);
+  return test::run_quiet(read_case(root, "ghost_tank_test"), 1);
 }
 
 TEST(GhostTank, HydrostaticGhostPressureKeepsTheTankAtRest) {

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 
@@ -19,10 +20,7 @@ namespace curvsph {
 namespace {
 
 nlohmann::json run_setup_only(const char* yaml, const std::string& name) {
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  return run_case(read_case(YAML::Load(yaml), name), o);
+  return test::run_quiet(read_case(YAML::Load(yaml), name));
 }
 
 TEST(InitialDensityError, MatchesBruteForceLatticeAndImageSums) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../support/bi_tank.hpp"
+#include "../support/quiet_run.hpp"
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
@@ -73,10 +74,7 @@ time: {end: 1.0}
 
 TEST(IntegralsBoundary, TinyHydrostaticTankStaysAtRest) {
   const Case c = read_case(tank("geometric"), "integrals_test");
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(c, o);
+  const auto m = test::run_quiet(c);
   EXPECT_EQ(m["steps"].get<long>(), 300);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
   // Bounded kinetic energy; the pressure rings acoustically after the start (the discrete

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 
@@ -22,12 +23,7 @@ TEST(DropletWall, EquilibriumCapAt120DegreesStaysThere) {
       path,
       {"walls.0.contact_angle=120", "fluids.1.region.disk.center=[0.0,-0.157332e-3]",
        "fluids.1.region.disk.radius=0.8e-3", "domain.min=[-4.0e-3,-1.457332e-3]", "time.end=0.4"});
-  RunOptions o;
-  o.out_dir = std::filesystem::temp_directory_path() / "curvsph_test_droplet_wall_cap120";
-  o.threads = 1;
-  o.progress = false;
-  o.write_files = false;
-  const auto m = run_case(c, o);
+  const auto m = test::run_quiet(c, 1);
   EXPECT_NEAR(m["contact_angle_initial_deg"].get<double>(), 120.0, 3.0);
   EXPECT_NEAR(m["contact_angle_deg_left"].get<double>(), 120.0, 3.0);
   EXPECT_NEAR(m["contact_angle_deg_right"].get<double>(), 120.0, 3.0);

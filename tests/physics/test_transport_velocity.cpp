@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../support/lattice.hpp"
+#include "../support/quiet_run.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/transport_velocity.hpp"
@@ -125,11 +126,7 @@ nlohmann::json taylor_green(bool tvf) {
   }
   const Case c = read_case(root, "taylor_green_tvf");
   EXPECT_NEAR(c.transport_pb, tvf ? 100.0 : 0.0, 1e-12);  // default: rho0 c0^2
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  o.threads = 1;
-  return run_case(c, o);
+  return test::run_quiet(c, 1);
 }
 
 TEST(TransportVelocity, TaylorGreenFollowsTheAnalyticDecay) {

@@ -4,6 +4,7 @@
 // particle crosses the NURBS wall.
 #include <gtest/gtest.h>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 
@@ -13,10 +14,7 @@ namespace {
 TEST(RegressionDropletWall, DropSpreadsTowardsTheImposedAngle) {
   const Case c = read_case(std::string(CURVSPH_SOURCE_DIR) + "/cases/droplet_wall.yaml",
                            {"time.end=0.4", "output.vtk=false"});
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(c, o);
+  const auto m = test::run_quiet(c);
   EXPECT_EQ(m["droplet_mass_change"].get<double>(), 0.0);
   EXPECT_EQ(m["wall_crossings"].get<long>(), 0);
   EXPECT_NEAR(m["contact_angle_imposed_deg"].get<double>(), 30.0, 1e-9);

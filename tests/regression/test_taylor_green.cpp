@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 
@@ -14,10 +15,7 @@ namespace {
 TEST(RegressionTaylorGreen, ShortRunFollowsTheAnalyticDecay) {
   const Case c = read_case(std::string(CURVSPH_SOURCE_DIR) + "/cases/taylor_green_2d.yaml",
                            {"resolution.dx=0.02", "time.end=0.3", "output.vtk=false"});
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  const auto m = run_case(c, o);
+  const auto m = test::run_quiet(c);
   EXPECT_EQ(m["particles"].get<long>(), 2500);
   // Kinetic energy against exp(-16 pi^2 nu t), nu = 0.01, computed here independently.
   const double ratio_exact = std::exp(-16 * std::numbers::pi * std::numbers::pi * 0.01 * 0.3);

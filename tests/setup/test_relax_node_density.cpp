@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 
@@ -32,12 +33,7 @@ analysis: {node_density: {}}
   return read_case(root, "relax_disk.yaml");
 }
 
-nlohmann::json run_quiet(const Case& c) {
-  RunOptions o;
-  o.write_files = false;
-  o.progress = false;
-  return run_case(c, o);
-}
+using test::run_quiet;
 
 TEST(Relax, ReducesNodeDensitySpreadInDisk) {
   const auto m =

@@ -2,7 +2,9 @@
 // (cases/periodic_box_3d.yaml's set-up: h/dx = 1.3, 30^3 = 27 000 particles) after one
 // solver step, so the fields are those of a running simulation:
 //   neighbours (cell-list build), density summation, renormalised density gradient,
-//   continuity rate with delta-SPH, fluid forces, kick-drift integration, re-sort (permute).
+//   continuity rate with delta-SPH, fluid forces, kick-drift integration, re-sort (permute),
+//   output (one VTK snapshot of every field, as `curvsph run` writes it, to the temporary
+//   directory: the disk's speed is part of it).
 // Counter particles_per_second = particles processed per wall-clock second (UseRealTime: the
 // loops are OpenMP-parallel). Ratios between phases are what to read; absolute rates depend
 // on the machine and its load.
@@ -10,10 +12,12 @@
 #include <benchmark/benchmark.h>
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "bench_report.hpp"
 #include "curvsph/io/case_file.hpp"
+#include "curvsph/io/vtk_writer.hpp"
 #include "curvsph/physics/density.hpp"
 #include "curvsph/physics/momentum.hpp"
 #include "curvsph/solver/solver.hpp"
@@ -132,6 +136,14 @@ void BM_PhaseResort(benchmark::State& state) {
   report_particles(state, P.size());
 }
 
+void BM_PhaseOutput(benchmark::State& state) {
+  const auto& P = box().solver->particles();
+  const auto file = std::filesystem::temp_directory_path() / "curvsph_bench_phase_output.vtp";
+  for (auto _ : state) io::write_vtp(file, P);
+  std::filesystem::remove(file);
+  report_particles(state, P.size());
+}
+
 BENCHMARK(BM_PhaseNeighbors)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PhaseDensitySummation)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PhaseDensityGradient)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -139,6 +151,7 @@ BENCHMARK(BM_PhaseContinuityRate)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PhaseFluidForces)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PhaseIntegrate)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PhaseResort)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PhaseOutput)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace curvsph

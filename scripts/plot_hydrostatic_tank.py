@@ -1,6 +1,7 @@
 """Plots of `curvsph validate hydrostatic_tank` (Calderon et al. Figs. 9-12): reduced kinetic
 energy and pressure error against t sqrt(g/H) for every run (solid: geometric Shepard factor,
-dashed: volume, dotted: the mirror-ghost comparison row), the pressure profile against depth at the end, and the particles near the
+dashed: volume, dotted: the mirror-ghost comparison row, dash-dot: the h/dx = 4 comparison rows
+with one change to the case), the pressure profile against depth at the end, and the particles near the
 right-hand corner at the end (coloured by p - p_hydrostatic)."""
 import csv
 import os
@@ -19,11 +20,13 @@ palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
 
 
 def label(r):
-    return f"N={r['particles']}, h/dx={r['h_over_dx']}, {r['shepard']}"
+    variant = r.get("variant") or ""
+    return f"N={r['particles']}, h/dx={r['h_over_dx']}, {r['shepard']}" + (
+        f" + {variant}" if variant else "")
 
 
 def color(r):
-    key = (r["dx"], r["h_over_dx"])
+    key = (r["dx"], r["h_over_dx"], r.get("variant") or "")
     if key not in colors:
         colors[key] = palette[len(colors) % len(palette)]
     return colors[key]
@@ -42,14 +45,14 @@ for field, fname, ylabel in [("kinetic_energy", "kinetic_energy.png", "KE / (M g
     for r in runs:
         d = history(r)
         y = np.maximum(d[field], 1e-14)
-        ls = {"geometric": "-", "ghost": ":"}.get(r["shepard"], "--")
+        ls = "-." if r.get("variant") else {"geometric": "-", "ghost": ":"}.get(r["shepard"], "--")
         ax.semilogy(d["reduced_time"], y, ls, color=color(r), lw=1.2, label=label(r))
         if r["unstable"] == "1":
             ax.plot(d["reduced_time"][-1], y[-1], "x", color=color(r), ms=8)
     ax.set_xlabel("t √(g/H)")
     ax.set_ylabel(ylabel)
-    ax.set_title("Hydrostatic tank: solid geometric γ, dashed volume γ, dotted ghosts "
-                 "(x: failure)", fontsize=9)
+    ax.set_title("Hydrostatic tank: solid geometric γ, dashed volume γ, dotted ghosts,\n"
+                 "dash-dot: h/dx = 4 with one change to the case (x: failure)", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()

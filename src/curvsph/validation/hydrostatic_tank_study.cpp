@@ -27,6 +27,9 @@ struct TankRun {
   int h_over_dx;
   std::string shepard;  // or "ghost": mirror ghost walls instead of boundary integrals
   double tau_end;       // reduced end time t sqrt(g/H) asked for
+  // A comparison row's change to the case ("": the case as it is): "fourtakas" (the density
+  // diffusion less its hydrostatic part, no renormalised gradient) or "wall_force".
+  std::string variant = {};
 };
 
 // The case's overrides for the wall treatment of a run. The ghost row (a comparison, not an
@@ -36,7 +39,10 @@ std::vector<std::string> wall_overrides(const TankRun& run) {
   if (run.shepard == "ghost")
     return {"boundary.method=ghost", "boundary.map=mirror", "boundary.velocity=no_slip",
             "boundary.ghost_pressure=hydrostatic", "setup.relax.max_steps=0"};
-  return {"boundary.shepard=" + run.shepard};
+  std::vector<std::string> o = {"boundary.shepard=" + run.shepard};
+  if (run.variant == "fourtakas") o.push_back("density.diffusion_term=fourtakas");
+  if (run.variant == "wall_force") o.push_back("boundary.wall_force=true");
+  return o;
 }
 
 }  // namespace
@@ -54,9 +60,18 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   if (ctx.quick) {
     runs = {{70, 2, "geometric", 2.0}, {70, 2, "volume", 2.0}};
   } else {
-    runs = {{140, 2, "geometric", 20.0}, {140, 2, "volume", 20.0},   {316, 2, "geometric", 20.0},
-            {446, 2, "geometric", 20.0}, {446, 3, "geometric", 5.0}, {446, 4, "geometric", 2.0},
-            {316, 2, "volume", 20.0},    {140, 2, "ghost", 20.0}};
+    runs = {{140, 2, "geometric", 20.0},
+            {140, 2, "volume", 20.0},
+            {316, 2, "geometric", 20.0},
+            {446, 2, "geometric", 20.0},
+            {446, 3, "geometric", 5.0},
+            {446, 4, "geometric", 2.0},
+            {316, 2, "volume", 20.0},
+            {140, 2, "ghost", 20.0},
+            // Comparison rows (reported, not checked): the h/dx = 4 failure at the contact
+            // lines with each of the two changes tried against it (findings.md, session 16).
+            {446, 4, "geometric", 2.0, "fourtakas"},
+            {446, 4, "geometric", 2.0, "wall_force"}};
   }
   const double H = 0.5, g = 9.81;
   const double t_ref = std::sqrt(H / g);
@@ -64,7 +79,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   std::filesystem::create_directories(ctx.out_dir);
   std::ofstream csv(ctx.out_dir / "hydrostatic_tank.csv");
   csv << "run,dx,h_over_dx,shepard,particles,steps,tau_end_asked,t_end_reached,unstable,"
-         "kinetic_energy_max,pressure_l2_error,escaped_particles,wall_seconds\n";
+         "kinetic_energy_max,pressure_l2_error,escaped_particles,wall_seconds,variant\n";
   std::string table =
       "| run | N | h/dx | Shepard | t√(g/H) asked | reached | KE max / (MgH) | p L2 error | "
       "escaped | wall s |\n|---|---|---|---|---|---|---|---|---|---|\n";
@@ -72,7 +87,8 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   int midpoint_runs = 0;
   for (const auto& run : runs) {
     const double dx = 1.0 / run.cells;
-    const std::string tag = fmt::format("n{}_h{}_{}", run.cells, run.h_over_dx, run.shepard);
+    const std::string tag = fmt::format("n{}_h{}_{}{}", run.cells, run.h_over_dx, run.shepard,
+                                        run.variant.empty() ? "" : "_" + run.variant);
     const double t_end = run.tau_end * t_ref;
     std::vector<std::string> overrides = {fmt::format("resolution.dx={:.17g}", dx),
                                           fmt::format("resolution.h_over_dx={}", run.h_over_dx)};
@@ -103,9 +119,9 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     const double tau = m["t_end_reached"];
     const long n = m["particles"], steps = m["steps"];
     const double wall = m.value("wall_seconds", 0.0);
-    csv << fmt::format("{},{:.9g},{},{},{},{},{},{:.6g},{},{:.6g},{:.6g},{},{:.1f}\n", tag, dx,
+    csv << fmt::format("{},{:.9g},{},{},{},{},{},{:.6g},{},{:.6g},{:.6g},{},{:.1f},{}\n", tag, dx,
                        run.h_over_dx, run.shepard, n, steps, run.tau_end, tau, unstable ? 1 : 0, ke,
-                       pe, escaped, wall);
+                       pe, escaped, wall, run.variant);
     // Runs stored before the element quadrature of the wall terms (findings.md, session 10).
     const bool midpoint = run.shepard != "ghost" && !m.contains("bi_element_quadrature_points");
     if (midpoint) ++midpoint_runs;
@@ -118,7 +134,19 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     r.metrics[tag + "_escaped_particles"] = escaped;
     r.metrics[tag + "_t_end_reached"] = tau;
     r.metrics[tag + "_unstable"] = unstable;
-    if (run.shepard == "geometric") {
+    if (!run.variant.empty()) {
+      const std::string ref = fmt::format(
+          "the case with {} (a comparison, findings.md session 16), N = {}, h/dx = {}, reported",
+          run.variant == "fourtakas" ? "density.diffusion_term: fourtakas"
+                                     : "boundary.wall_force: true",
+          n, run.h_over_dx);
+      r.summary.push_back({"hydrostatic_tank." + tag + ".escaped_particles",
+                           static_cast<double>(escaped), "reported", ref, true});
+      r.summary.push_back(
+          {"hydrostatic_tank." + tag + ".t_end_reached", tau, "reported", ref, true});
+      r.summary.push_back(
+          {"hydrostatic_tank." + tag + ".kinetic_energy_max", ke, "reported", ref, true});
+    } else if (run.shepard == "geometric") {
       const std::string ref =
           fmt::format("Calderon §3.1, N = {}, h/dx = {}, t√(g/H) = {:.3g}", n, run.h_over_dx, tau);
       if (run.tau_end < 1) {
@@ -173,11 +201,16 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "pressure error: RMS over the particles of p - rho0 g (H - y), over rho0 g H. "
         "The row `n140_h2_ghost` is the same tank with the other wall treatment for comparison: "
         "mirror ghost walls (`boundary: {method: ghost, map: mirror, ghost_pressure: "
-        "hydrostatic}`) on the bare lattice (findings.md, session 12).\n\n";
+        "hydrostatic}`) on the bare lattice (findings.md, session 12). The rows "
+        "`n446_h4_geometric_fourtakas` and `n446_h4_geometric_wall_force` repeat the failing "
+        "h/dx = 4 run with one change each, `density.diffusion_term: fourtakas` (the density "
+        "diffusion less its hydrostatic part, as AQUAgpusph's hydrostatic delta-SPH correction) "
+        "and `boundary.wall_force: true` (off in the paper's tank): comparisons, reported, not "
+        "checked (findings.md, session 16).\n\n";
   if (ctx.quick) md << "**Quick run** (`--quick`): N ~ 2500, t sqrt(g/H) = 2 only.\n\n";
   std::string shortened;  // "to 5 at h/dx = 3 and 2 at h/dx = 4", from the runs list
   for (const auto& run : runs)
-    if (run.tau_end < 20 && run.h_over_dx != 2)
+    if (run.tau_end < 20 && run.h_over_dx != 2 && run.variant.empty())
       shortened += fmt::format("{}to {:g} at h/dx = {}", shortened.empty() ? "" : " and ",
                                run.tau_end, run.h_over_dx);
   md << "## Runs\n\n"

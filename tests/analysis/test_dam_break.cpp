@@ -87,3 +87,56 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
   }
   std::filesystem::remove_all(dir);
 }
+
+// The first impact's peak is P1's maximum within the experiment's impact-to-peak time of the
+// run's own impact; a later, larger maximum (the ringing after the impact) is p1_peak only.
+TEST(DamBreakAnalysis, FirstImpactPeakIgnoresLaterMaxima) {
+  const auto dir = std::filesystem::temp_directory_path() / "curvsph_test_dam_break_first";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream e(dir / "exp.dat");
+    e << "Time P1 P2 P3 P4 P5 P6 P7 P8 H1 H2 H3 H4\n";
+    for (int i = 0; i <= 2000; ++i) {
+      const double t = i * 1e-3;
+      e << t << ' ' << pulse(t, 0.40, 10000) << " 0 0 0 0 0 0 0 0.1 0.1 0.1 0.1\n";
+    }
+  }
+  {
+    std::ofstream p(dir / "probes.csv");
+    p << "time";
+    for (int k = 1; k <= 8; ++k) p << ",P" << k << ".p_wall";
+    for (int k = 1; k <= 4; ++k) p << ",H" << k << ".height";
+    p << '\n';
+    for (int i = 0; i <= 1100; ++i) {
+      const double t = i * 1e-3;
+      p << t << ',' << pulse(t, 0.41, 9000) + pulse(t, 0.60, 20000)
+        << ",0,0,0,0,0,0,0,0.1,0.1,0.1,0.1\n";
+    }
+  }
+  Case c;
+  c.file = dir / "case.yaml";
+  YAML::Node params;
+  params["experiment"] = "exp.dat";
+  auto a = make_analysis<3>("dam_break", params, c);
+  nlohmann::json m;
+  Particles<3> P;
+  a->finish(1.1, P, m, dir);
+  // Impacts: first 1 ms samples above 2000 Pa (the later pulse is ~0 there).
+  const double imp_exp = std::ceil((0.40 - 0.02 * std::sqrt(std::log(5.0))) * 1e3) * 1e-3;
+  const double imp = std::ceil((0.41 - 0.02 * std::sqrt(std::log(4.5))) * 1e3) * 1e-3;
+  const double rise = 0.40 - imp_exp;  // the experiment's peak sample is t = 0.400
+  EXPECT_NEAR(m["p1_rise_time_exp"].get<double>(), rise, 1e-9);
+  // Brute force over the run's samples in [imp, imp + rise].
+  double expected = 0, at = 0;
+  for (int i = 0; i <= 1100; ++i) {
+    const double t = i * 1e-3, v = pulse(t, 0.41, 9000) + pulse(t, 0.60, 20000);
+    if (t >= imp - 1e-9 && t <= imp + rise + 1e-9 && v > expected) expected = v, at = t;
+  }
+  EXPECT_NEAR(at, 0.41, 1e-9);  // the window holds the first pulse's peak, not the second
+  EXPECT_NEAR(m["p1_first_peak"].get<double>(), expected, 1e-6);
+  EXPECT_NEAR(m["p1_first_peak_time"].get<double>(), at, 1e-9);
+  EXPECT_NEAR(m["p1_first_peak_ratio"].get<double>(), expected / 10000, 1e-9);
+  EXPECT_NEAR(m["p1_peak"].get<double>(), 20000, 1e-3);
+  EXPECT_NEAR(m["p1_peak_time"].get<double>(), 0.60, 1e-9);
+  std::filesystem::remove_all(dir);
+}

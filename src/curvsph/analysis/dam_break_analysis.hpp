@@ -8,9 +8,13 @@
 // The run's probes.csv must hold P1..P8 (field p_wall, or p) and gauges H1..H4.
 //
 // Figures (pressures in Pa, times in s; NaN = not reached):
-//   p1_peak, p1_peak_time, p2_peak: maximum over t <= min(1.5 s, end) (the first impact);
+//   p1_peak, p1_peak_time, p2_peak: maximum over t <= min(1.5 s, end);
 //   p1_impact_time: first time P1 exceeds 20 % of the experimental P1 peak (the same for the
 //   experiment: p1_impact_time_exp); p1_peak_exp, p1_peak_time_exp, p2_peak_exp;
+//   p1_first_peak, p1_first_peak_time, p1_first_peak_ratio (over p1_peak_exp): the first
+//   impact's peak, P1's maximum over [p1_impact_time, p1_impact_time + p1_rise_time_exp],
+//   p1_rise_time_exp = p1_peak_time_exp - p1_impact_time_exp (the experiment's impact-to-peak
+//   time, 0.020 s: the same rule gives the experiment's own peak);
 //   h2_at_1s (and _exp): the water height at H2 (x = 0.992) at t = 1 s;
 //   p1_rms_error, p2_rms_error: RMS of (simulated - experimental) pressure over
 //   t in [0, min(1.5 s, end)], divided by the experimental P1 peak (a dry sensor reads 0);

@@ -47,9 +47,10 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
   std::filesystem::create_directories(ctx.out_dir);
   StudyResult r;
   std::string table =
-      "| run | particles | t reached | P1 peak (Pa) | at (s) | P1 impact (s) | P2 peak (Pa) | "
-      "H2 at 1 s (m) | P1 RMS / P1exp peak | P2 RMS / P1exp peak | wall s |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| run | particles | t reached | P1 impact (s) | first-impact P1 peak (Pa) | at (s) | "
+      "P1 max (Pa) | at (s) | P2 max (Pa) | H2 at 1 s (m) | P1 RMS / P1exp peak | "
+      "P2 RMS / P1exp peak | wall s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json exp_row;
   std::vector<std::string> tags;
   std::string notes;  // runs that ended before their time.end
@@ -91,16 +92,17 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
     if (num("unstable") == 1)
       notes += fmt::format("- `{}` went unstable at t = {:.3f} s: {}\n", tag, num("time_reached"),
                            m.value("unstable_message", std::string()));
-    for (const char* k : {"p1_peak", "p1_peak_time", "p1_impact_time", "p2_peak", "h2_at_1s",
-                          "p1_rms_error", "p2_rms_error", "time_reached", "particles"})
+    for (const char* k :
+         {"p1_peak", "p1_peak_time", "p1_first_peak", "p1_first_peak_time", "p1_impact_time",
+          "p2_peak", "h2_at_1s", "p1_rms_error", "p2_rms_error", "time_reached", "particles"})
       r.metrics[tag + "_" + k] = num(k);
     exp_row = m;
     table += fmt::format(
-        "| `{}` | {:.0f} | {:.3f} | {:.0f} | {:.4f} | {:.4f} | {:.0f} | {:.3f} | {:.3f} | {:.3f} | "
-        "{:.0f} |\n",
-        tag, num("particles"), num("time_reached"), num("p1_peak"), num("p1_peak_time"),
-        num("p1_impact_time"), num("p2_peak"), num("h2_at_1s"), num("p1_rms_error"),
-        num("p2_rms_error"), num("wall_seconds"));
+        "| `{}` | {:.0f} | {:.3f} | {:.4f} | {:.0f} | {:.4f} | {:.0f} | {:.4f} | {:.0f} | {:.3f} | "
+        "{:.3f} | {:.3f} | {:.0f} |\n",
+        tag, num("particles"), num("time_reached"), num("p1_impact_time"), num("p1_first_peak"),
+        num("p1_first_peak_time"), num("p1_peak"), num("p1_peak_time"), num("p2_peak"),
+        num("h2_at_1s"), num("p1_rms_error"), num("p2_rms_error"), num("wall_seconds"));
     const double pe = num("p1_peak_exp"), te = num("p1_impact_time_exp");
     const std::string ref =
         fmt::format("MARIN experiment (Kleefsman et al. 2005), 0.55/{}", run.cells);
@@ -109,10 +111,15 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
     r.summary.push_back({"dam_break_3d." + tag + ".p1_impact_time_error_s", dt_impact,
                          fmt::format("abs <= 0.05 (exp. {:.3f} s)", te), ref,
                          reached && std::abs(dt_impact) <= 0.05});
-    const double ratio = num("p1_peak") / pe;
-    r.summary.push_back({"dam_break_3d." + tag + ".p1_peak_ratio", ratio,
+    // The "its peak" is the first impact's (dam_break_analysis.hpp); the maximum over
+    // the run, later ringing included, is reported beside it.
+    const double ratio = num("p1_first_peak") / pe;
+    r.summary.push_back({"dam_break_3d." + tag + ".p1_first_peak_ratio", ratio,
                          fmt::format("0.75 .. 1.25 (exp. {:.0f} Pa)", pe), ref,
                          reached && ratio >= 0.75 && ratio <= 1.25});
+    r.summary.push_back(
+        {"dam_break_3d." + tag + ".p1_peak_ratio", num("p1_peak") / pe,
+         fmt::format("reported (maximum over t <= {:.2f} s)", num("rms_window_end")), ref, true});
     r.summary.push_back({"dam_break_3d." + tag + ".p1_rms_error", num("p1_rms_error"),
                          fmt::format("reported (t <= {:.2f} s)", num("rms_window_end")), ref,
                          true});
@@ -149,14 +156,19 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
         "Impact time: first time P1 exceeds 20 % of the experimental P1 peak (same rule for "
         "the experiment). RMS errors over t in [0, min(1.5 s, end)], over the experimental P1 "
         "peak.\n\n"
-        "**Runs** (this README comes from `--quick`): 0.55/20 (31 680 particles, the issue's "
-        "quick resolution) to t = 1.5 s, and the earlier 0.55/15 run (13 365 particles) to "
-        "t = 0.45 s through the first impact. 0.55/30 (~110 000 particles, the full study) was "
-        "out of reach on 2 shared cores: 0.55/20 took 3844 s of wall time at 4.9e4 "
-        "particle-steps/s on 1 thread. The 0.55/20 run was made by `curvsph run` with the "
-        "study's settings and VTK snapshots on (output.vtk=true, the same numerics). After the "
-        "first impact a ~100 Hz oscillation grows at P1-P4 (see findings.md); `p1_peak` is its "
-        "maximum, not the first impact's.\n\n"
+        "**Runs.** `--quick`: 0.55/15 (13 365 particles) to t = 0.45 s, through the first "
+        "impact, and 0.55/20 (31 680 particles, the issue's quick resolution) to t = 1.5 s; "
+        "the full study: 0.55/20 and 0.55/30 (108 540 particles) to t = 1.5 s. This README "
+        "comes from "
+     << (ctx.quick ? "`--quick`" : "the full study")
+     << ". Probes at 1 kHz, VTK snapshots off; the case as committed (boundary force of "
+        "Calderon §3.2 on).\n\n"
+        "**P1's peak.** After the first impact a ringing of ~100 Hz (the box face's acoustic "
+        "mode at c0 = 40 m/s; findings.md) grows at P1-P4 and sets the maximum over the run. "
+        "The target figure is therefore the first impact's peak, `p1_first_peak`: P1's "
+        "maximum within the experiment's impact-to-peak time (0.020 s) after the run's own "
+        "impact (the same rule returns the experiment's peak); the maximum over the run, "
+        "`p1_peak`, is reported beside it.\n\n"
         "## Runs\n\n"
      << table << (notes.empty() ? "" : "\n" + notes) << "\n## Summary\n\n"
      << summary_markdown(r.summary)

@@ -18,34 +18,36 @@ double pulse(double t, double t0, double a) {
   return a * std::exp(-std::pow((t - t0) / 0.02, 2));
 }
 
-}  // namespace
+// The experiment file, 1 kHz to t = 2 s: `row(t)` writes the 12 columns after the time
+// (P1..P8, then the heights in the data set's order H3, H2, H1, H4).
+template <class Row>
+void write_experiment(const std::filesystem::path& file, Row row) {
+  std::ofstream e(file);
+  e << "Time P1 P2 P3 P4 P5 P6 P7 P8 H1 H2 H3 H4\n";
+  for (int i = 0; i <= 2000; ++i) {
+    e << i * 1e-3 << ' ';
+    row(e, i * 1e-3);
+    e << '\n';
+  }
+}
 
-TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
-  const auto dir = std::filesystem::temp_directory_path() / "curvsph_test_dam_break";
-  std::filesystem::create_directories(dir);
-  // Experiment: 13 columns, heights stored as H3, H2, H1, H4 (the data set's order).
-  {
-    std::ofstream e(dir / "exp.dat");
-    e << "Time P1 P2 P3 P4 P5 P6 P7 P8 H1 H2 H3 H4\n";
-    for (int i = 0; i <= 2000; ++i) {
-      const double t = i * 1e-3;
-      e << t << ' ' << pulse(t, 0.40, 10000) << ' ' << pulse(t, 0.40, 5000) << " 0 0 0 0 0 0 "
-        << 0.3 * t << ' ' << 0.2 * t << ' ' << 0.1 * t << " 0.5\n";
-    }
-  }
-  // Run: P1 delayed by 10 ms and scaled by 0.9, P2 exact; H2 = 0.2 t + 0.01.
-  {
-    std::ofstream p(dir / "probes.csv");
-    p << "time";
-    for (int k = 1; k <= 8; ++k) p << ",P" << k << ".p_wall";
-    for (int k = 1; k <= 4; ++k) p << ",H" << k << ".height";
+// The run's probes.csv, 1 kHz to t = 1.1 s: `row(t)` writes P1..P8 (p_wall) and H1..H4.
+template <class Row>
+void write_probes(const std::filesystem::path& file, Row row) {
+  std::ofstream p(file);
+  p << "time";
+  for (int k = 1; k <= 8; ++k) p << ",P" << k << ".p_wall";
+  for (int k = 1; k <= 4; ++k) p << ",H" << k << ".height";
+  p << '\n';
+  for (int i = 0; i <= 1100; ++i) {
+    p << i * 1e-3 << ',';
+    row(p, i * 1e-3);
     p << '\n';
-    for (int i = 0; i <= 1100; ++i) {
-      const double t = i * 1e-3;
-      p << t << ',' << pulse(t, 0.41, 9000) << ',' << pulse(t, 0.40, 5000) << ",nan,0,0,0,0,0,0.1,"
-        << 0.2 * t + 0.01 << ",0.3,0.5\n";
-    }
   }
+}
+
+// The analysis's figures for the files in dir, the run ended at t = 1.1 s.
+nlohmann::json analyse(const std::filesystem::path& dir) {
   Case c;
   c.file = dir / "case.yaml";
   YAML::Node params;
@@ -54,6 +56,24 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
   nlohmann::json m;
   Particles<3> P;
   a->finish(1.1, P, m, dir);
+  return m;
+}
+
+}  // namespace
+
+TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
+  const auto dir = std::filesystem::temp_directory_path() / "curvsph_test_dam_break";
+  std::filesystem::create_directories(dir);
+  write_experiment(dir / "exp.dat", [](std::ostream& e, double t) {
+    e << pulse(t, 0.40, 10000) << ' ' << pulse(t, 0.40, 5000) << " 0 0 0 0 0 0 " << 0.3 * t << ' '
+      << 0.2 * t << ' ' << 0.1 * t << " 0.5";
+  });
+  // Run: P1 delayed by 10 ms and scaled by 0.9, P2 exact; H2 = 0.2 t + 0.01.
+  write_probes(dir / "probes.csv", [](std::ostream& p, double t) {
+    p << pulse(t, 0.41, 9000) << ',' << pulse(t, 0.40, 5000) << ",nan,0,0,0,0,0,0.1,"
+      << 0.2 * t + 0.01 << ",0.3,0.5";
+  });
+  const nlohmann::json m = analyse(dir);
   EXPECT_NEAR(m["p1_peak"].get<double>(), 9000, 1e-6);
   EXPECT_NEAR(m["p1_peak_time"].get<double>(), 0.41, 1e-9);
   EXPECT_NEAR(m["p1_peak_exp"].get<double>(), 10000, 1e-6);
@@ -77,6 +97,8 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
   EXPECT_TRUE(std::filesystem::exists(dir / "dam_break_comparison.csv"));
 
   // A missing experiment file is an input error naming the key.
+  Case c;
+  c.file = dir / "case.yaml";
   YAML::Node bad;
   bad["experiment"] = "missing.dat";
   try {
@@ -93,34 +115,13 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
 TEST(DamBreakAnalysis, FirstImpactPeakIgnoresLaterMaxima) {
   const auto dir = std::filesystem::temp_directory_path() / "curvsph_test_dam_break_first";
   std::filesystem::create_directories(dir);
-  {
-    std::ofstream e(dir / "exp.dat");
-    e << "Time P1 P2 P3 P4 P5 P6 P7 P8 H1 H2 H3 H4\n";
-    for (int i = 0; i <= 2000; ++i) {
-      const double t = i * 1e-3;
-      e << t << ' ' << pulse(t, 0.40, 10000) << " 0 0 0 0 0 0 0 0.1 0.1 0.1 0.1\n";
-    }
-  }
-  {
-    std::ofstream p(dir / "probes.csv");
-    p << "time";
-    for (int k = 1; k <= 8; ++k) p << ",P" << k << ".p_wall";
-    for (int k = 1; k <= 4; ++k) p << ",H" << k << ".height";
-    p << '\n';
-    for (int i = 0; i <= 1100; ++i) {
-      const double t = i * 1e-3;
-      p << t << ',' << pulse(t, 0.41, 9000) + pulse(t, 0.60, 20000)
-        << ",0,0,0,0,0,0,0,0.1,0.1,0.1,0.1\n";
-    }
-  }
-  Case c;
-  c.file = dir / "case.yaml";
-  YAML::Node params;
-  params["experiment"] = "exp.dat";
-  auto a = make_analysis<3>("dam_break", params, c);
-  nlohmann::json m;
-  Particles<3> P;
-  a->finish(1.1, P, m, dir);
+  write_experiment(dir / "exp.dat", [](std::ostream& e, double t) {
+    e << pulse(t, 0.40, 10000) << " 0 0 0 0 0 0 0 0.1 0.1 0.1 0.1";
+  });
+  write_probes(dir / "probes.csv", [](std::ostream& p, double t) {
+    p << pulse(t, 0.41, 9000) + pulse(t, 0.60, 20000) << ",0,0,0,0,0,0,0,0.1,0.1,0.1,0.1";
+  });
+  const nlohmann::json m = analyse(dir);
   // Impacts: first 1 ms samples above 2000 Pa (the later pulse is ~0 there).
   const double imp_exp = std::ceil((0.40 - 0.02 * std::sqrt(std::log(5.0))) * 1e3) * 1e-3;
   const double imp = std::ceil((0.41 - 0.02 * std::sqrt(std::log(4.5))) * 1e3) * 1e-3;

@@ -14,11 +14,12 @@ namespace curvsph {
 
 template <int D>
 struct PairFactors {
-  std::vector<Real> volume;  // V_j = m_j / rho_j (continuity path, density gradient)
-  std::vector<Real> inv_s2;  // 1 / sigma_j^2
-  std::vector<Real> p_s2;    // p_j / sigma_j^2
-  std::vector<Real> mu;      // dynamic viscosity of j's phase
-  std::vector<Real> moment;  // renormalisation matrix accumulator, D(D+1)/2 per particle
+  std::vector<Real> volume;     // V_j = m_j / rho_j (continuity path, density gradient)
+  std::vector<Real> inv_s2;     // 1 / sigma_j^2
+  std::vector<Real> p_s2;       // p_j / sigma_j^2
+  std::vector<Real> mu;         // dynamic viscosity of j's phase
+  std::vector<Real> moment;     // renormalisation matrix accumulator, D(D+1)/2 per particle
+  std::vector<Real> visc_coef;  // alpha h c0 rho0 / rho_j (artificial viscosity)
 
   void fill_volume(const Particles<D>& P) {
     volume.resize(P.size());
@@ -39,7 +40,7 @@ struct PairFactors {
 
   std::size_t bytes() const {
     return (volume.capacity() + inv_s2.capacity() + p_s2.capacity() + mu.capacity() +
-            moment.capacity()) *
+            moment.capacity() + visc_coef.capacity()) *
            sizeof(Real);
   }
 };

@@ -1,19 +1,15 @@
 #include "curvsph/boundary/integrals/shepard.hpp"
 
+// The Shepard factor's modes and the reference quadrature of the geometric one
+// (shepard_geometric: element by element, Gauss points on the polynomial part); the solver's
+// fast evaluation of the geometric factor is GeometricShepard (geometric_shepard.cpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <limits>
-#include <map>
 #include <mutex>
-#include <numbers>
 #include <stdexcept>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "curvsph/boundary/integrals/shepard_quadrature.hpp"
 #include "curvsph/kernels/boundary_kernel.hpp"
 #include "curvsph/kernels/wendland.hpp"
 
@@ -42,14 +38,8 @@ const char* to_string(ShepardMode mode) {
   return "?";
 }
 
-namespace {
+namespace shepard_detail {
 
-constexpr double pi = std::numbers::pi;
-
-// Gauss-Legendre rule on [0, 1] with n points (Newton on P_n), cached per n.
-struct GaussRule {
-  std::vector<double> x, w;
-};
 const GaussRule& gauss_rule(int n) {
   // One once_flag per rule rather than a mutex: the solver asks for the rule for every
   // particle near a wall, every step, and after the first call this is a lock-free check.
@@ -81,15 +71,6 @@ const GaussRule& gauss_rule(int n) {
   return r;
 }
 
-double cross2(const Vec2d& a, const Vec2d& b) {
-  return a[0] * b[1] - a[1] * b[0];
-}
-
-// Arc geometry of a 2-D element with curvature kappa != 0: circle centre O.
-Vec2d arc_circle_centre(const BoundaryElements<2>& el, std::size_t j) {
-  return el.centre[j] + el.normal[j] / el.curvature[j];  // c - O = -n / kappa
-}
-
 bool point_in_polygon(const BoundaryElements<3>& el, std::size_t j, const Vec3d& p, double tol) {
   const auto& v = el.vertices[j];
   const int m = el.vertex_count[j];
@@ -108,7 +89,6 @@ double segment_distance(const Vec3d& a, const Vec3d& b, const Vec3d& x) {
   return (a + t * e - x).norm();
 }
 
-// Distance from x to element j (exact for segments, arcs and planar polygons).
 double element_distance(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x) {
   const Vec2d& a = el.vertices[j][0];
   const Vec2d& b = el.vertices[j][1];
@@ -142,8 +122,6 @@ double element_distance(const BoundaryElements<3>& el, std::size_t j, const Vec3
   return d;
 }
 
-// Signed offset of x from element j's integrated shape (> 0 on the fluid side) and whether
-// x projects onto the element (for the `gap` band of curved-wall elements).
 double signed_offset(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x, bool& onto) {
   const Vec2d& a = el.vertices[j][0];
   const Vec2d& b = el.vertices[j][1];
@@ -229,6 +207,8 @@ double poly_part(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x,
   return sum;
 }
 
+namespace {
+
 // int over triangle (p0, p1, p2) of f, collapsed (Duffy) Gauss rule with p0 the collapsed
 // vertex, sub-divided until the longest edge is <= max_edge.
 template <class Fn>
@@ -256,6 +236,8 @@ double triangle_integral(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, doub
   return sum * twice_area;
 }
 
+}  // namespace
+
 double poly_part(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x,
                  const BoundaryKernel<3>& F, const ShepardQuadrature& q) {
   const Vec3d n = el.normal[j];
@@ -280,12 +262,14 @@ double poly_part(const BoundaryElements<3>& el, std::size_t j, const Vec3d& x,
   return dn * sum;
 }
 
-template <int D>
-constexpr double sphere_measure() {
-  return D == 2 ? 2 * pi : 4 * pi;
-}
+}  // namespace shepard_detail
 
-}  // namespace
+using shepard_detail::arc_circle_centre;
+using shepard_detail::cross2;
+using shepard_detail::element_distance;
+using shepard_detail::element_parts;
+using shepard_detail::geometric_impl;
+using shepard_detail::pi;
 
 template <>
 double subtended_angle<2>(const BoundaryElements<2>& el, std::size_t j, const Vec2d& x) {
@@ -321,93 +305,6 @@ double subtended_angle<3>(const BoundaryElements<3>& el, std::size_t j, const Ve
   return omega;
 }
 
-namespace {
-
-// The geometric factor over the elements `for_each(fn)` visits (all, or a candidate list).
-// Singular and polynomial parts element by element (shepard_geometric's quadrature).
-template <int D>
-double element_parts(const BoundaryElements<D>& el, std::span<const std::size_t> near,
-                     const VecD<D>& x, const VecD<D>& xs, const BoundaryKernel<D>& F,
-                     const ShepardQuadrature& quad) {
-  double angles = 0, poly = 0;
-  for (std::size_t j : near) {
-    angles += subtended_angle<D>(el, j, xs);
-    poly += poly_part(el, j, x, F, quad);
-  }
-  return angles / sphere_measure<D>() + poly;
-}
-
-// `skip_far`: leave out elements whose exact distance is >= 2h (GeometricShepard);
-// `parts_of(near, x, xs)`: the sum over the elements `near` of the singular part (angle /
-// solid angle over the sphere's measure, seen from xs) and the polynomial part (at x).
-// `radius`: el.bounding_radius(j) for every j, tabulated (GeometricShepard), or null;
-// `reach`: with it, a bound on d(x, element j) - |x - centre_j| (about 0 where the centre
-// lies on the element, else the bounding radius), or null for the bounding radius.
-template <int D, class ForEach, class Parts>
-double geometric_impl(const BoundaryElements<D>& el, const VecD<D>& x, double h,
-                      const ShepardQuadrature& quad, const ForEach& for_each, bool skip_far,
-                      const Parts& poly_of, const double* radius = nullptr,
-                      const double* reach = nullptr) {
-  const double support = 2.0 * h;
-  const double tol = quad.on_wall_tolerance * h;
-  // Candidates: elements reaching into the support ball; the rest contribute exactly 0.
-  // Thread-local scratch: the solver calls this for every particle near a wall, every step.
-  thread_local std::vector<std::size_t> near, touched;
-  near.clear();
-  touched.clear();
-  VecD<D> mean_normal = VecD<D>::Zero();
-  double behind = 0.0;  // how far x lies behind curved-wall elements within their gap
-  // Far from touching: the element lies in the ball of its bounding radius rb about its
-  // centre, so its distance d is in [rc - rb, rc + rb] (at most rc where the centre lies on
-  // the element: flat polygons); when that interval is clear of the
-  // on-wall band (tol, or gap + tol) and, with skip_far, inside the support, no decision
-  // below depends on d and the exact distance is not computed (most elements of a particle
-  // one or more rows from the wall). The margins cover the round-off of rc - rb and rc + rb.
-  const double margin = 1e-12 * support;
-  for_each([&](std::size_t j) {
-    const double rc = (el.centre[j] - x).norm();
-    const double rb = radius ? radius[j] : el.bounding_radius(j);
-    if (rc - rb >= support) return;
-    const double band = tol + (j < el.gap.size() ? std::max(el.gap[j], 0.0) : 0.0);
-    const double ub = rc + (reach ? reach[j] : rb);
-    if (rc - rb > band + margin && (!skip_far || ub < support - margin)) {
-      near.push_back(j);
-      return;
-    }
-    const double d = element_distance(el, j, x);
-    if (skip_far && d >= support) return;
-    near.push_back(j);
-    bool hit = d <= tol;
-    if (!hit && j < el.gap.size() && el.gap[j] > 0.0 && d <= el.gap[j] + tol) {
-      // Between the element and the curved wall it stands for: on the wall.
-      bool onto = false;
-      const double s = signed_offset(el, j, x, onto);
-      if (onto && s < 0.0) {
-        hit = true;
-        behind = std::max(behind, -s);
-      }
-    }
-    if (hit) {
-      mean_normal += el.normal[j];
-      touched.push_back(j);
-    }
-  });
-  // On the wall: the singular part is the limit from the fluid side along the mean normal of
-  // the touched elements (makes contact points, vertices and corner apexes exact); a point
-  // behind a curved-wall element by less than its gap is first moved to its fluid side.
-  VecD<D> xs = x;
-  const double mn = mean_normal.norm();
-  if (mn > 1e-12) {
-    const VecD<D> m = mean_normal / mn;
-    double cmin = 1.0;
-    for (std::size_t j : touched) cmin = std::min(cmin, el.normal[j].dot(m));
-    xs = x + (1.5 * behind / std::max(cmin, 0.2) + 1e-9 * h) * m;
-  }
-  return 1.0 - poly_of(std::span<const std::size_t>(near), x, xs);
-}
-
-}  // namespace
-
 template <int D>
 double shepard_geometric(const BoundaryElements<D>& el, const VecD<D>& x, double h,
                          const ShepardQuadrature& quad) {
@@ -436,405 +333,6 @@ double shepard_geometric(const BoundaryElements<D>& el, std::span<const std::siz
       [&](std::span<const std::size_t> near, const VecD<D>& y, const VecD<D>& ys) {
         return element_parts(el, near, y, ys, F, quad);
       });
-}
-
-template <int D>
-GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
-                                      const ShepardQuadrature& quad)
-    : h_(h), quad_(quad) {
-  radius_.resize(el.size());
-  reach_.resize(el.size());
-  for (std::size_t j = 0; j < el.size(); ++j) {
-    radius_[j] = el.bounding_radius(j);
-    reach_[j] = radius_[j];
-    if constexpr (D == 3) {
-      // A flat polygon whose centre projects into it (the centroid of a convex one):
-      // d(x) <= |x - c'| <= |x - c| + |c - c'|, c' the centre's foot on the plane.
-      const bool flat = j >= el.gap.size() || el.gap[j] == 0.0;
-      const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
-      if (flat && point_in_polygon(el, j, el.centre[j], 0.0)) reach_[j] = std::min(off, reach_[j]);
-    }
-  }
-  if constexpr (D == 3) {
-    // Twins: an edge b -> a of another element in the same plane with the same normal
-    // cancels this element's a -> b term exactly (operator() below). Vertices are matched
-    // on a grid of 1e-9 h.
-    const double grid = 1e-9 * h;
-    using Key = std::array<long long, 6>;
-    auto key = [&](const Vec3d& a, const Vec3d& b) {
-      Key k;
-      for (int d = 0; d < 3; ++d) {
-        k[static_cast<std::size_t>(d)] = std::llround(a[d] / grid);
-        k[static_cast<std::size_t>(d + 3)] = std::llround(b[d] / grid);
-      }
-      return k;
-    };
-    std::map<Key, std::vector<std::int64_t>> edges;  // directed edge a -> b: elements
-    twin_.assign(4 * el.size(), -1);
-    for (std::size_t j = 0; j < el.size(); ++j) {
-      const auto& v = el.vertices[j];
-      const int m = el.vertex_count[j];
-      for (int k = 0; k < m; ++k)
-        edges[key(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)])]
-            .push_back(static_cast<std::int64_t>(j));
-    }
-    for (std::size_t j = 0; j < el.size(); ++j) {
-      const auto& v = el.vertices[j];
-      const int m = el.vertex_count[j];
-      for (int k = 0; k < m; ++k) {
-        const auto it = edges.find(
-            key(v[static_cast<std::size_t>((k + 1) % m)], v[static_cast<std::size_t>(k)]));
-        if (it == edges.end()) continue;
-        for (std::int64_t o : it->second) {
-          const auto so = static_cast<std::size_t>(o);
-          const bool same_plane = (el.normal[so] - el.normal[j]).norm() < 1e-12 &&
-                                  std::abs(el.normal[j].dot(el.vertices[so][0] - v[0])) < grid;
-          if (same_plane && o != static_cast<std::int64_t>(j)) {
-            twin_[4 * j + static_cast<std::size_t>(k)] = o;
-            break;
-          }
-        }
-      }
-    }
-    build_patches(el);
-  }
-}
-
-template <int D>
-void GeometricShepard<D>::build_patches(const BoundaryElements<D>& el) requires(D == 3) {
-  // Patches: connected components of the twin graph over exact flat elements (gap 0, centre
-  // in the element's plane and inside it). Elements standing for a curved wall (gap > 0)
-  // stay out: their on-wall band is handled by geometric_impl.
-  const std::size_t n = el.size();
-  const double grid = 1e-9 * h_;
-  std::vector<std::int64_t> parent(n);
-  std::vector<unsigned char> flat(n, 0);
-  for (std::size_t j = 0; j < n; ++j) {
-    parent[j] = static_cast<std::int64_t>(j);
-    const bool exact = j >= el.gap.size() || el.gap[j] == 0.0;
-    const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
-    flat[j] = exact && off <= grid && point_in_polygon(el, j, el.centre[j], 0.0);
-  }
-  auto find = [&](std::int64_t a) {
-    while (parent[static_cast<std::size_t>(a)] != a) {
-      auto& pa = parent[static_cast<std::size_t>(a)];
-      pa = parent[static_cast<std::size_t>(pa)];  // path halving
-      a = pa;
-    }
-    return a;
-  };
-  for (std::size_t j = 0; j < n; ++j)
-    for (int k = 0; k < el.vertex_count[j]; ++k) {
-      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
-      if (o < 0 || !flat[j] || !flat[static_cast<std::size_t>(o)]) continue;
-      const std::int64_t a = find(static_cast<std::int64_t>(j)), b = find(o);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    }
-  patch_.assign(n, -1);
-  std::vector<std::int32_t> id(n, -1);
-  std::int32_t count = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!flat[j]) continue;
-    const auto root = static_cast<std::size_t>(find(static_cast<std::int64_t>(j)));
-    if (id[root] < 0) id[root] = count++;
-    patch_[j] = id[root];
-  }
-  // Rim of every patch: the edges whose twin is not a member of the same patch. clear_[j] =
-  // distance from centre j to its patch's rim (brute force over the rim, once at set-up:
-  // elements x rim edges of one patch). The patch is a union of elements glued along twin
-  // edges, so its boundary lies on rim edges and the disc of radius clear_[j] about the
-  // centre (inside element j) is inside the patch; a non-conforming mesh (T-junctions)
-  // leaves inner edges without twins, which only makes clear_ smaller (conservative).
-  std::vector<std::vector<std::array<Vec3d, 2>>> rim(static_cast<std::size_t>(count));
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    const auto& v = el.vertices[j];
-    const int m = el.vertex_count[j];
-    for (int k = 0; k < m; ++k) {
-      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
-      if (o >= 0 && patch_[static_cast<std::size_t>(o)] == patch_[j]) continue;
-      rim[static_cast<std::size_t>(patch_[j])].push_back(
-          {v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]});
-    }
-  }
-  clear_.assign(n, 0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    double d = std::numeric_limits<double>::infinity();
-    for (const auto& e : rim[static_cast<std::size_t>(patch_[j])])
-      d = std::min(d, segment_distance(e[0], e[1], el.centre[j]));
-    clear_[j] = d;
-  }
-}
-
-namespace {
-
-// Psi(q) = int_0^q F_Pext(s) s ds in units of h (3-D, DESIGN.md §4 kernel): inside the support
-// the antiderivative of q h^3 F_P, outside of q / (4 pi q^3), continuous at q = 2.
-inline double psi3(double q) {
-  constexpr double pi = std::numbers::pi;
-  if (q >= 2.0) return (0.375 - 0.25 / q) / pi;
-  const double q2 = q * q;
-  return ((((((3.0 / 1024.0 * q - 15.0 / 512.0) * q + 7.0 / 64.0) * q - 21.0 / 128.0) * q) * q) *
-              q2 +
-          7.0 / 32.0 * q2) /
-         pi;
-}
-
-// The contribution 1 - gamma of a flat face that covers the whole support disc of x on its
-// plane, x at distance delta = d/h (0 < delta < 2) on the fluid side. From the edge form in
-// operator(): with F = F_D + F_Pext the radial antiderivative is Psi_full(q) = psi3(q) +
-// 1/(4 pi q) (the singular part, h^3 F_D = -1/(4 pi q^3), gives +1/(4 pi q)), which is the
-// constant 3/(8 pi) for q >= 2 (F = 0 there). A rim entirely outside the support therefore
-// gives delta [Psi_full(delta) - 3/(8 pi)] times the angle it subtends about the foot, 2 pi:
-//   1 - gamma = 1/2 - (3/4) delta + 2 pi delta psi3(delta).
-// Checks: 1/2 at delta = 0 (on the wall), 0 at delta = 2 (psi3(2) = 1/(4 pi)), and
-// d(gamma)/d(delta) = 3/4 at the wall = 2 pi int_0^2 W(q) q dq (the kernel's mass on the
-// wall plane). Tested against the radial quadrature of tests/boundary/test_shepard.cpp.
-inline double half_space_part(double delta) {
-  return 0.5 - 0.75 * delta + 2.0 * std::numbers::pi * delta * psi3(delta);
-}
-
-// H(s_i) = [Psi(sqrt(d^2 + s_i)) - Psi0] / s_i at s_i = p^2 + t_i^2, t_i = t0 + x_i dl, for
-// the n Gauss points x of one edge piece (the inner loop of the rim quadrature below, most
-// of the geometric factor's cost). Two points at a time with SSE2 where available: the same
-// IEEE operations in the same order as psi3 (both of its branches evaluated, one selected),
-// so the values are bitwise those of the scalar loop; only the throughput of the square
-// roots and divisions changes.
-inline void rim_values(const double* x, std::size_t n, double t0, double dl, double p, double d2,
-                       double psi0, double* out) {
-  std::size_t i = 0;
-#if defined(__SSE2__)
-  constexpr double pi = std::numbers::pi;
-  const __m128d vt0 = _mm_set1_pd(t0), vdl = _mm_set1_pd(dl), vp2 = _mm_set1_pd(p * p);
-  const __m128d vd2 = _mm_set1_pd(d2), vpsi0 = _mm_set1_pd(psi0), vpi = _mm_set1_pd(pi);
-  const __m128d two = _mm_set1_pd(2.0);
-  for (; i + 1 < n; i += 2) {
-    const __m128d t = _mm_add_pd(vt0, _mm_mul_pd(_mm_loadu_pd(x + i), vdl));
-    const __m128d s = _mm_add_pd(vp2, _mm_mul_pd(t, t));
-    const __m128d q = _mm_sqrt_pd(_mm_add_pd(vd2, s));
-    const __m128d outer =
-        _mm_div_pd(_mm_sub_pd(_mm_set1_pd(0.375), _mm_div_pd(_mm_set1_pd(0.25), q)), vpi);
-    const __m128d q2 = _mm_mul_pd(q, q);
-    __m128d in = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(3.0 / 1024.0), q), _mm_set1_pd(15.0 / 512.0));
-    in = _mm_add_pd(_mm_mul_pd(in, q), _mm_set1_pd(7.0 / 64.0));
-    in = _mm_sub_pd(_mm_mul_pd(in, q), _mm_set1_pd(21.0 / 128.0));
-    in = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(in, q), q), q2);
-    in = _mm_div_pd(_mm_add_pd(in, _mm_mul_pd(_mm_set1_pd(7.0 / 32.0), q2)), vpi);
-    const __m128d far = _mm_cmpge_pd(q, two);
-    const __m128d psi = _mm_or_pd(_mm_and_pd(far, outer), _mm_andnot_pd(far, in));
-    _mm_storeu_pd(out + i, _mm_div_pd(_mm_sub_pd(psi, vpsi0), s));
-  }
-#endif
-  for (; i < n; ++i) {
-    const double t = t0 + x[i] * dl;
-    const double s = p * p + t * t;
-    out[i] = (psi3(std::sqrt(d2 + s)) - psi0) / s;
-  }
-}
-
-}  // namespace
-
-template <int D>
-double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
-                                       std::span<const std::size_t> candidates,
-                                       const VecD<D>& x) const {
-  const BoundaryKernel<D> F(h_);
-  auto for_each = [&](const auto& fn) {
-    for (std::size_t j : candidates) fn(j);
-  };
-  if constexpr (D == 2) {
-    return geometric_impl<D>(
-        el, x, h_, quad_, for_each, true,
-        [&](std::span<const std::size_t> near, const Vec2d& y, const Vec2d& ys) {
-          return element_parts(el, near, y, ys, F, quad_);
-        },
-        radius_.data());
-  } else {
-    // Polynomial part of a planar polygon, exact in the radial direction. With f the foot of
-    // y on the polygon's plane, d = n.(v0 - y) and q-units (lengths / h):
-    //   int_poly n.(z - y) F_Pext(|z - y|) dA = d sum_edges int_triangle(f, a, b)
-    //   and int_triangle = int dtheta [Psi(sqrt(d^2 + rho_e^2)) - Psi(|d|)]
-    // (polar coordinates about f, rho dr = u du), signed by the triangle's orientation, which
-    // is Stokes' edge form of the area integral and holds wherever f lies. Along the edge
-    // z = a + t e (e unit, p = the signed distance of f from the edge line), dtheta =
-    // p dt / (p^2 + t^2), so each edge gives
-    //   p int H(p^2 + t^2) dt,   H(s) = [Psi(sqrt(d^2 + s)) - Psi(|d|)] / s   (bounded, smooth)
-    // with Gauss points on pieces split at the edge's closest point to f. An edge shared with
-    // a twin of the same plane that is also among the elements cancels it exactly (the
-    // reversed edge gives the opposite term): only the rim of the candidate patch of a flat
-    // wall face is integrated.
-    const GaussRule& g = gauss_rule(2 * quad_.gauss_points);
-    std::array<double, 32> hv;  // H at the Gauss points of one piece (gauss_rule: n <= 32)
-    const double inv_h = F.inv_h;
-    const double max_piece = quad_.max_piece_over_h;  // in units of h
-    auto parts = [&](std::span<const std::size_t> near, const Vec3d& y, const Vec3d& ys) {
-      thread_local std::vector<std::uint32_t> mark;
-      thread_local std::uint32_t stamp = 0;
-      if (mark.size() != el.size()) {
-        mark.assign(el.size(), 0);
-        stamp = 0;
-      }
-      if (++stamp == 0) {
-        std::fill(mark.begin(), mark.end(), 0);
-        stamp = 1;
-      }
-      for (std::size_t j : near) mark[j] = stamp;
-      // An edge wholly 2h or more from y (the rim of a patch is mostly made of them: an edge
-      // whose twin is not near lies on that twin, at >= 2h) takes F = F_D + F_Pext = 0 beyond
-      // the support: in the edge form below, p int [Psi_full(q) - Psi_full(|d|)] / (p^2 +
-      // t^2) dt with Psi_full = psi3 + 1/(4 pi q) = 3/(8 pi) for q >= 2 (see half_space_part)
-      // is [3/(8 pi) - Psi_full(|d|)] times the plane angle the edge subtends about the foot,
-      // atan(tb/p) - atan(ta/p): no solid angle, no quadrature. Only where the singular and
-      // polynomial parts are taken at the same point (ys = y, x not on a wall).
-      const bool same_point = y == ys;
-      const double support2 = 4.0 * h_ * h_;
-      auto beyond = [&](const Vec3d& a, const Vec3d& b) {
-        if (!same_point) return false;
-        const Vec3d e = b - a;
-        const double t = std::clamp(e.dot(y - a) / e.squaredNorm(), 0.0, 1.0);
-        return (a + t * e - y).squaredNorm() >= support2;
-      };
-      // Solid angles: element j's is the signed sum of those of the triangles (f, a, b) over
-      // its edges a -> b, f the foot of ys on its plane (Van Oosterom & Strackee with unit
-      // vectors, signed as subtended_angle); twins cancel as for the polynomial part. A point
-      // in the element's plane sees it under a zero angle (a point on it has been moved off
-      // the wall by geometric_impl).
-      double omega = 0;
-      for (std::size_t j : near) {
-        const Vec3d n = el.normal[j];
-        const auto& v = el.vertices[j];
-        const double ds = n.dot(v[0] - ys);
-        if (std::abs(ds) <= 1e-14 * h_) continue;
-        const Vec3d fh = ds > 0 ? n : Vec3d(-n);  // unit vector from ys to its foot
-        const int m = el.vertex_count[j];
-        for (int k = 0; k < m; ++k) {
-          const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
-          if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
-          if (beyond(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]))
-            continue;  // in closed form below
-          const Vec3d a = (v[static_cast<std::size_t>(k)] - ys).normalized();
-          const Vec3d b = (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized();
-          omega -= 2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
-        }
-      }
-      double total = omega / (4 * std::numbers::pi);
-      for (std::size_t j : near) {
-        const Vec3d n = el.normal[j];
-        const auto& v = el.vertices[j];
-        const double dn = n.dot(v[0] - y);
-        if (std::abs(dn) <= 1e-14 * h_) continue;  // y in the element's plane: n.(z - y) = 0
-        const Vec3d f = y + dn * n;
-        const double d = dn * inv_h, d2 = d * d, psi0 = psi3(std::abs(d));
-        const int m = el.vertex_count[j];
-        double sum = 0, far_angle = 0;
-        for (int k = 0; k < m; ++k) {
-          const std::int64_t tw = twin_[4 * j + static_cast<std::size_t>(k)];
-          if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
-          const Vec3d& a = v[static_cast<std::size_t>(k)];
-          const Vec3d& b = v[static_cast<std::size_t>((k + 1) % m)];
-          const Vec3d e = (b - a).normalized();
-          const double p = n.dot((a - f).cross(e)) * inv_h;
-          if (p == 0.0) continue;
-          const double ta = e.dot(a - f) * inv_h, tb = e.dot(b - f) * inv_h;
-          if (beyond(a, b)) {
-            far_angle += std::atan2(p * (tb - ta), p * p + ta * tb);  // exact difference
-            continue;
-          }
-          double cuts[3] = {ta, tb, tb};
-          int ncut = 2;
-          if (ta < 0.0 && tb > 0.0) {
-            cuts[1] = 0.0;
-            ncut = 3;
-          }
-          double edge = 0;
-          for (int c = 0; c + 1 < ncut; ++c) {
-            const double len = cuts[c + 1] - cuts[c];
-            if (len <= 0) continue;
-            const int pieces = std::max(1, static_cast<int>(std::ceil(len / max_piece)));
-            const double dl = len / pieces;
-            for (int pc = 0; pc < pieces; ++pc) {
-              const double t0 = cuts[c] + pc * dl;
-              rim_values(g.x.data(), g.x.size(), t0, dl, p, d2, psi0, hv.data());
-              for (std::size_t i = 0; i < g.x.size(); ++i) edge += g.w[i] * dl * hv[i];
-            }
-          }
-          sum += p * edge;
-        }
-        // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of far edges.
-        constexpr double inv4pi = 0.25 / std::numbers::pi;
-        total += d * sum + (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far_angle;
-      }
-      return total;
-    };
-    // Flat faces that cover the support disc of x (most particles near a wall): their
-    // contribution in closed form (half_space_part), their elements skipped; a face whose
-    // plane is 2h or more from x contributes nothing. Decided per patch (patch_, clear_):
-    // the disc of radius rho = sqrt(4h^2 - d^2) about the foot f lies in the patch when
-    // |f - c_j| + rho <= clear_[j] for any member j among the candidates. Everything else
-    // (faces cut by their rim within the support, curved patches, points on or behind a
-    // face) takes the rim quadrature above, which is additive over elements.
-    struct Slot {
-      std::int32_t patch;
-      enum : unsigned char { none, pending, covered, rest } state;
-      double dn, rho;
-      Vec3d foot;
-    };
-    constexpr std::size_t max_slots = 16;
-    std::array<Slot, max_slots> slots;
-    std::size_t nslots = 0;
-    const double support = 2.0 * h_;
-    const double on_wall = 2.0 * quad_.on_wall_tolerance * h_;
-    auto slot_of = [&](std::int32_t pid) -> Slot* {
-      for (std::size_t k = 0; k < nslots; ++k)
-        if (slots[k].patch == pid) return &slots[k];
-      return nullptr;
-    };
-    for (std::size_t j : candidates) {
-      const std::int32_t pid = patch_[j];
-      if (pid < 0) continue;
-      Slot* s = slot_of(pid);
-      if (!s) {
-        if (nslots == max_slots) continue;  // left to the quadrature (pass 2)
-        s = &slots[nslots++];
-        s->patch = pid;
-        s->dn = el.normal[j].dot(x - el.vertices[j][0]);  // > 0 on the fluid side
-        if (std::abs(s->dn) >= support) {
-          s->state = Slot::none;
-        } else if (s->dn <= on_wall) {
-          s->state = Slot::rest;  // on or behind the face: geometric_impl's limits
-        } else {
-          s->state = Slot::pending;
-          s->rho = std::sqrt(support * support - s->dn * s->dn);
-          s->foot = x - s->dn * el.normal[j];
-        }
-      }
-      if (s->state == Slot::pending) {
-        const double room = clear_[j] - s->rho;
-        if (room >= 0 && (s->foot - el.centre[j]).squaredNorm() <= room * room)
-          s->state = Slot::covered;
-      }
-    }
-    double covered = 0;
-    for (std::size_t k = 0; k < nslots; ++k) {
-      if (slots[k].state == Slot::covered) covered += half_space_part(slots[k].dn * F.inv_h);
-      if (slots[k].state == Slot::pending) slots[k].state = Slot::rest;
-    }
-    thread_local std::vector<std::size_t> rest;
-    rest.clear();
-    for (std::size_t j : candidates) {
-      const std::int32_t pid = patch_[j];
-      const Slot* s = pid < 0 ? nullptr : slot_of(pid);
-      if (!s || s->state == Slot::rest) rest.push_back(j);
-    }
-    if (rest.empty()) return 1.0 - covered;
-    auto for_rest = [&](const auto& fn) {
-      for (std::size_t j : rest) fn(j);
-    };
-    return geometric_impl<D>(el, x, h_, quad_, for_rest, true, parts, radius_.data(),
-                             reach_.data()) -
-           covered;
-  }
 }
 
 namespace {

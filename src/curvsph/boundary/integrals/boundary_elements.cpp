@@ -29,20 +29,22 @@ void BoundaryElements<D>::append(const BoundaryElements& o) {
   gap.insert(gap.end(), o.gap.begin(), o.gap.end());
 }
 
-template <int D>
-void BoundaryElements<D>::add_segment(const VecD<D>& a, const VecD<D>& b) requires(D == 2) {
+// The dimension-specific members are explicit specializations, not constrained members of the
+// template: clang 14 (clang-tidy) instantiates constrained members in the explicit
+// instantiations below even where the constraint fails.
+template <>
+void BoundaryElements<2>::add_segment(const VecD<2>& a, const VecD<2>& b) {
   add_arc(a, b, 0.0);
 }
 
-template <int D>
-void BoundaryElements<D>::add_arc(const VecD<D>& a, const VecD<D>& b,
-                                  double kappa) requires(D == 2) {
-  const VecD<D> chord = b - a;
+template <>
+void BoundaryElements<2>::add_arc(const VecD<2>& a, const VecD<2>& b, double kappa) {
+  const VecD<2> chord = b - a;
   const double c = chord.norm();
   if (!(c > 0)) throw std::invalid_argument("boundary element with zero length");
-  const VecD<D> t = chord / c;
-  const VecD<D> n(-t[1], t[0]);  // fluid on the left of a -> b
-  VecD<D> mid = 0.5 * (a + b);
+  const VecD<2> t = chord / c;
+  const VecD<2> n(-t[1], t[0]);  // fluid on the left of a -> b
+  VecD<2> mid = 0.5 * (a + b);
   double length = c;
   if (kappa != 0.0) {
     const double R = 1.0 / std::abs(kappa);
@@ -62,11 +64,11 @@ void BoundaryElements<D>::add_arc(const VecD<D>& a, const VecD<D>& b,
   gap.push_back(0.0);
 }
 
-template <int D>
-void BoundaryElements<D>::add_polygon(const VecD<D>* v, int count) requires(D == 3) {
+template <>
+void BoundaryElements<3>::add_polygon(const VecD<3>* v, int count) {
   if (count < 3 || count > 4) throw std::invalid_argument("3-D elements have 3 or 4 vertices");
-  VecD<D> cross = VecD<D>::Zero();
-  VecD<D> mean = VecD<D>::Zero();
+  VecD<3> cross = VecD<3>::Zero();
+  VecD<3> mean = VecD<3>::Zero();
   for (int k = 1; k + 1 < count; ++k) cross += (v[k] - v[0]).cross(v[k + 1] - v[0]);
   const double twice_area = cross.norm();
   if (!(twice_area > 0)) throw std::invalid_argument("boundary element with zero area");
@@ -76,7 +78,7 @@ void BoundaryElements<D>::add_polygon(const VecD<D>* v, int count) requires(D ==
     mean += w * (v[0] + v[k] + v[k + 1]) / 3.0;
   }
   Vertices verts;
-  verts.fill(VecD<D>::Zero());
+  verts.fill(VecD<3>::Zero());
   for (int k = 0; k < count; ++k) verts[static_cast<std::size_t>(k)] = v[k];
   centre.push_back(mean / twice_area);
   normal.push_back(cross / twice_area);
@@ -87,10 +89,9 @@ void BoundaryElements<D>::add_polygon(const VecD<D>* v, int count) requires(D ==
   gap.push_back(0.0);
 }
 
-template <int D>
-void BoundaryElements<D>::add_curved_arc(const VecD<D>& a, const VecD<D>& b, const VecD<D>& c,
-                                         const VecD<D>& n, double length, double kappa,
-                                         double g) requires(D == 2) {
+template <>
+void BoundaryElements<2>::add_curved_arc(const VecD<2>& a, const VecD<2>& b, const VecD<2>& c,
+                                         const VecD<2>& n, double length, double kappa, double g) {
   if (!((b - a).norm() > 0) || !(length > 0))
     throw std::invalid_argument("boundary element with zero length");
   if (kappa != 0.0 && (b - a).norm() > 2.0 / std::abs(kappa))
@@ -104,13 +105,13 @@ void BoundaryElements<D>::add_curved_arc(const VecD<D>& a, const VecD<D>& b, con
   gap.push_back(std::max(0.0, g));
 }
 
-template <int D>
-void BoundaryElements<D>::add_curved_patch(const VecD<D>* v, int count, const VecD<D>& c,
-                                           const VecD<D>& n, double a, double g) requires(D == 3) {
+template <>
+void BoundaryElements<3>::add_curved_patch(const VecD<3>* v, int count, const VecD<3>& c,
+                                           const VecD<3>& n, double a, double g) {
   if (count < 3 || count > 4) throw std::invalid_argument("3-D elements have 3 or 4 vertices");
   if (!(a > 0)) throw std::invalid_argument("boundary element with zero area");
   Vertices verts;
-  verts.fill(VecD<D>::Zero());
+  verts.fill(VecD<3>::Zero());
   for (int k = 0; k < count; ++k) verts[static_cast<std::size_t>(k)] = v[k];
   centre.push_back(c);
   normal.push_back(n.normalized());

@@ -43,26 +43,41 @@ struct BoundaryElements {
   void append(const BoundaryElements& other);
 
   // 2-D straight segment a -> b, fluid on the left.
-  void add_segment(const VecD<D>& a, const VecD<D>& b) requires(D == 2);
+  void add_segment(const VecD<D>& a, const VecD<D>& b);
   // 2-D arc from a to b (fluid on the left of a -> b) on a circle with signed curvature
   // kappa (> 0: fluid on the concave side, i.e. inside the circle). kappa = 0 is a segment.
-  void add_arc(const VecD<D>& a, const VecD<D>& b, double kappa) requires(D == 2);
+  void add_arc(const VecD<D>& a, const VecD<D>& b, double kappa);
   // 3-D planar polygon (3 or 4 vertices, counter-clockwise seen from the fluid).
-  void add_polygon(const VecD<D>* v, int count) requires(D == 3);
+  void add_polygon(const VecD<D>* v, int count);
 
   // A piece of a curved wall, with the centre, unit normal and area (length) taken from the
   // true wall rather than from the vertices. 2-D: integrated as the circular arc a -> b with
   // curvature kappa (fluid on the left of a -> b); 3-D: integrated as the planar polygon v
   // (3 or 4 vertices on the wall, counter-clockwise seen from the fluid). `gap` as above.
   void add_curved_arc(const VecD<D>& a, const VecD<D>& b, const VecD<D>& centre,
-                      const VecD<D>& normal, double length, double kappa,
-                      double gap) requires(D == 2);
+                      const VecD<D>& normal, double length, double kappa, double gap);
   void add_curved_patch(const VecD<D>* v, int count, const VecD<D>& centre, const VecD<D>& normal,
-                        double area, double gap) requires(D == 3);
+                        double area, double gap);
 
   // Radius of a ball about centre[j] containing the whole element.
   double bounding_radius(std::size_t j) const;
 };
+
+// The dimension-specific members are explicit specializations (boundary_elements.cpp): calling
+// one in the other dimension fails at link time.
+template <>
+void BoundaryElements<2>::add_segment(const VecD<2>& a, const VecD<2>& b);
+template <>
+void BoundaryElements<2>::add_arc(const VecD<2>& a, const VecD<2>& b, double kappa);
+template <>
+void BoundaryElements<3>::add_polygon(const VecD<3>* v, int count);
+template <>
+void BoundaryElements<2>::add_curved_arc(const VecD<2>& a, const VecD<2>& b, const VecD<2>& centre,
+                                         const VecD<2>& normal, double length, double kappa,
+                                         double gap);
+template <>
+void BoundaryElements<3>::add_curved_patch(const VecD<3>* v, int count, const VecD<3>& centre,
+                                           const VecD<3>& normal, double area, double gap);
 
 // ---- Generators --------------------------------------------------------------------------
 

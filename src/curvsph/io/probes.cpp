@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 
 namespace curvsph {
@@ -82,8 +83,13 @@ std::vector<double> ProbeWriter<D>::sample(const Particles<D>& P, const CellList
       for (std::size_t j = 0; j < P.size(); ++j) reach = std::max(reach, (P.x[j] - x0).dot(dir));
       const Real step = dx_ / 4;
       Real height = 0;
-      for (Real s = 0; s <= reach + W.support; s += step)
+      // An integer counter: s = k step carries no accumulated round-off (clang-tidy's
+      // FloatLoopCounter), and the last sample is the one at or below reach + 2h.
+      const auto samples = static_cast<long>(std::floor((reach + W.support) / step));
+      for (long k = 0; k <= samples; ++k) {
+        const Real s = static_cast<Real>(k) * step;
         if (interpolate<D>(x0 + s * dir, P, cells, W).fraction >= Real(0.5)) height = s;
+      }
       vals.push_back(height);
       continue;
     }

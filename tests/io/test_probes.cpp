@@ -53,3 +53,49 @@ TEST(Probes, WallPressureOfAHydrostaticLayer) {
   EXPECT_LT(v[0], 0.97 * v[1]);
   std::filesystem::remove(path);
 }
+
+// Water-height gauges (kind gauge): the height is the highest point of the gauge line where the
+// kernel-weighted fluid fraction sum_j W V_j is at least 1/2, which for a lattice layer of n
+// rows is its surface, n dx (a half space gives 1/2 exactly at its surface), to the march's
+// step dx/4 and the lattice's departure from the half space (the sum at n dx is a little
+// below 1/2: the reading is one step under). Checked against n dx within dx/2, and exactly
+// against the same rule applied to a brute-force sum over all particles (no cell list).
+// The layer fills the whole floor, so no side truncates the kernel.
+TEST(Probes, GaugeReadsTheDepthOfALatticeLayer) {
+  const int n = 14;
+  const double dx = 1.0 / n, rho = 998;
+  const WendlandC2<3> W(2 * dx);
+  for (const int rows : {7, 4}) {
+    Particles<3> P;
+    P.resize(n * n * rows);
+    for (int k = 0; k < n * n * rows; ++k) {
+      P.x[k] = Vec<3>((k % n + 0.5) * dx, (k / n % n + 0.5) * dx, (k / (n * n) + 0.5) * dx);
+      P.rho[k] = rho;
+      P.mass[k] = rho * dx * dx * dx;
+      P.id[k] = k;
+    }
+    CellList<3> cells;
+    cells.configure(W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
+    cells.build(P.x);
+    ProbeSpec s;
+    s.name = "H";
+    s.kind = ProbeSpec::Kind::gauge;
+    s.point = Vec3d(0.5, 0.5, 0.0);
+    s.direction = Vec3d(0, 0, 1);
+    const auto path = std::filesystem::temp_directory_path() / "curvsph_test_gauge.csv";
+    ProbeWriter<3> w({s}, path.string(), dx);
+    const auto v = w.sample(P, cells, W);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_NEAR(v[0], rows * dx, dx / 2) << rows << " rows";
+    double brute = 0;
+    for (int k = 0; k * dx / 4 <= 1.0; ++k) {
+      const Vec<3> x(0.5, 0.5, k * dx / 4);
+      double frac = 0;
+      for (std::size_t j = 0; j < P.size(); ++j)
+        frac += W.value((x - P.x[j]).norm()) * P.mass[j] / P.rho[j];
+      if (frac >= 0.5) brute = k * dx / 4;
+    }
+    EXPECT_NEAR(v[0], brute, 1e-12) << rows << " rows";
+    std::filesystem::remove(path);
+  }
+}

@@ -11,22 +11,39 @@
 
 using namespace curvsph;
 
+namespace {
+
+// A lattice of n x n x rows particles of spacing 1/n filling the unit square's floor, density
+// rho (cells_of: its cell list for the kernel W).
+Particles<3> lattice_layer(int n, int rows, double rho) {
+  const double dx = 1.0 / n;
+  Particles<3> P;
+  P.resize(static_cast<std::size_t>(n * n * rows));
+  for (int k = 0; k < n * n * rows; ++k) {
+    P.x[k] = Vec<3>((k % n + 0.5) * dx, (k / n % n + 0.5) * dx, (k / (n * n) + 0.5) * dx);
+    P.rho[k] = rho;
+    P.mass[k] = rho * dx * dx * dx;
+    P.id[k] = k;
+  }
+  return P;
+}
+
+CellList<3> cells_of(const Particles<3>& P, const WendlandC2<3>& W) {
+  CellList<3> cells;
+  cells.configure(W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
+  cells.build(P.x);
+  return cells;
+}
+
+}  // namespace
+
 TEST(Probes, WallPressureOfAHydrostaticLayer) {
   const int n = 14;
   const double dx = 1.0 / n, rho = 998, g = 9.81, H = 1.0;
   const WendlandC2<3> W(2 * dx);
-  Particles<3> P;
-  P.resize(n * n * n);
-  for (int k = 0; k < n * n * n; ++k) {
-    P.x[k] = Vec<3>((k % n + 0.5) * dx, (k / n % n + 0.5) * dx, (k / (n * n) + 0.5) * dx);
-    P.rho[k] = rho;
-    P.mass[k] = rho * dx * dx * dx;
-    P.p[k] = rho * g * (H - P.x[k][2]);
-    P.id[k] = k;
-  }
-  CellList<3> cells;
-  cells.configure(W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
-  cells.build(P.x);
+  Particles<3> P = lattice_layer(n, n, rho);
+  for (std::size_t k = 0; k < P.size(); ++k) P.p[k] = rho * g * (H - P.x[k][2]);
+  const CellList<3> cells = cells_of(P, W);
   ProbeSpec s;
   s.name = "S";
   s.point = Vec3d(0.5, 0.5, 0.0);
@@ -66,17 +83,8 @@ TEST(Probes, GaugeReadsTheDepthOfALatticeLayer) {
   const double dx = 1.0 / n, rho = 998;
   const WendlandC2<3> W(2 * dx);
   for (const int rows : {7, 4}) {
-    Particles<3> P;
-    P.resize(n * n * rows);
-    for (int k = 0; k < n * n * rows; ++k) {
-      P.x[k] = Vec<3>((k % n + 0.5) * dx, (k / n % n + 0.5) * dx, (k / (n * n) + 0.5) * dx);
-      P.rho[k] = rho;
-      P.mass[k] = rho * dx * dx * dx;
-      P.id[k] = k;
-    }
-    CellList<3> cells;
-    cells.configure(W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
-    cells.build(P.x);
+    const Particles<3> P = lattice_layer(n, rows, rho);
+    const CellList<3> cells = cells_of(P, W);
     ProbeSpec s;
     s.name = "H";
     s.kind = ProbeSpec::Kind::gauge;

@@ -81,12 +81,14 @@ void renormalised_density_gradient(const Particles<D>& P, const CellList<D>& cel
     grad_rho[i] = Vec<D>::Zero();
     for (int k = 0; k < K; ++k) A[i * K + k] = 0;
   });
+  // Declared outside the generic lambda below: clang 14 (clang-tidy) crashes instantiating a
+  // default member initialiser of a class local to a generic lambda.
+  struct Sums {  // i's share of g_i and of the upper triangle of A_i
+    Vec<D> g = Vec<D>::Zero();
+    std::array<Real, K> a{};
+  };
   rule.dispatch([&](auto midpoint) {
     constexpr bool M = decltype(midpoint)::value;
-    struct Sums {  // i's share of g_i and of the upper triangle of A_i
-      Vec<D> g = Vec<D>::Zero();
-      std::array<Real, K> a{};
-    };
     cells.for_each_pair_acc(
         Sums{},
         [&](Sums& sum_i, Index i, Index j, const Vec<D>& r, Real r2) {

@@ -73,9 +73,10 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
             {316, 2, "volume", 20.0},
             {140, 2, "ghost", 20.0},
             // Comparison rows (reported, not checked): the h/dx = 4 failure at the contact
-            // lines with each of the two changes tried against it (findings.md, session 16).
+            // lines with each of the changes tried against it (findings.md, sessions 16, 19).
             {446, 4, "geometric", 2.0, "fourtakas", "density.diffusion_term=fourtakas"},
-            {446, 4, "geometric", 2.0, "wall_force", "boundary.wall_force=true"}};
+            {446, 4, "geometric", 2.0, "wall_force", "boundary.wall_force=true"},
+            {446, 4, "geometric", 2.0, "av", "artificial_viscosity.alpha=0.01"}};
   }
   const double H = 0.5, g = 9.81;
   const double t_ref = std::sqrt(H / g);
@@ -139,9 +140,9 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     r.metrics[tag + "_t_end_reached"] = tau;
     r.metrics[tag + "_unstable"] = unstable;
     if (!run.variant.empty()) {
-      const std::string ref = fmt::format(
-          "the case with {} (a comparison, findings.md session 16), N = {}, h/dx = {}, reported",
-          run.change, n, run.h_over_dx);
+      const std::string ref =
+          fmt::format("the case with {} (a comparison, findings.md), N = {}, h/dx = {}, reported",
+                      run.change, n, run.h_over_dx);
       r.summary.push_back({"hydrostatic_tank." + tag + ".escaped_particles",
                            static_cast<double>(escaped), "reported", ref, true});
       r.summary.push_back(
@@ -204,11 +205,12 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "The row `n140_h2_ghost` is the same tank with the other wall treatment for comparison: "
         "mirror ghost walls (`boundary: {method: ghost, map: mirror, ghost_pressure: "
         "hydrostatic}`) on the bare lattice (findings.md, session 12). The rows "
-        "`n446_h4_geometric_fourtakas` and `n446_h4_geometric_wall_force` repeat the failing "
-        "h/dx = 4 run with one change each, `density.diffusion_term: fourtakas` (the density "
-        "diffusion less its hydrostatic part, as AQUAgpusph's hydrostatic delta-SPH correction) "
-        "and `boundary.wall_force: true` (off in the paper's tank): comparisons, reported, not "
-        "checked (findings.md, session 16).\n\n";
+        "`n446_h4_geometric_fourtakas`, `n446_h4_geometric_wall_force` and `n446_h4_geometric_av` "
+        "repeat the failing h/dx = 4 run with one change each, `density.diffusion_term: "
+        "fourtakas` (the density diffusion less its hydrostatic part, as AQUAgpusph's "
+        "hydrostatic delta-SPH correction), `boundary.wall_force: true` (off in the paper's tank) "
+        "and `artificial_viscosity.alpha: 0.01` (a momentum diffusion; the issue's tank has "
+        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19).\n\n";
   if (ctx.quick) md << "**Quick run** (`--quick`): N ~ 2500, t sqrt(g/H) = 2 only.\n\n";
   std::string shortened;  // "to 5 at h/dx = 3 and 2 at h/dx = 4", from the runs list
   for (const auto& run : runs)

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <utility>
+#include <tuple>
 #include <vector>
 
 #include "curvsph/core/quadrature.hpp"
@@ -238,9 +238,8 @@ bool cylinder_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds, BoundaryE
   if (!cy) return false;
   require_bounds(bounds, w.describe());
   const Vec3d ax = cy->axis(), p = cy->point();
-  // Not a structured binding: clang 14 (clang-tidy) cannot capture one in the lambdas below.
-  const std::pair<Vec3d, Vec3d> frame = orthonormal_frame(ax);
-  const Vec3d e1 = frame.first, e2 = frame.second;
+  Vec3d e1, e2;  // std::tie as in cylinder.cpp: clang 14 cannot capture a structured binding
+  std::tie(e1, e2) = orthonormal_frame(ax);
   const double R = cy->radius(), s = cy->side() == FluidSide::inside ? -1.0 : 1.0;
   double v0 = std::numeric_limits<double>::infinity(), v1 = -v0;
   for (int i = 0; i < 8; ++i) {
@@ -287,9 +286,8 @@ bool torus_3d(const Wall<3>& w, double dx, const Bounds<3>&, BoundaryElements<3>
   const auto* to = dynamic_cast<const TorusWall*>(&w);
   if (!to) return false;
   const Vec3d c = to->center(), ax = to->axis();
-  // Not a structured binding: clang 14 (clang-tidy) cannot capture one in the lambdas below.
-  const std::pair<Vec3d, Vec3d> frame = orthonormal_frame(ax);
-  const Vec3d e1 = frame.first, e2 = frame.second;
+  Vec3d e1, e2;
+  std::tie(e1, e2) = orthonormal_frame(ax);
   const double R = to->major_radius(), a = to->minor_radius();
   const double s = to->side() == FluidSide::inside ? -1.0 : 1.0;
   auto outward = [&](double t, double f) {

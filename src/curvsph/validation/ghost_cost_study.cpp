@@ -1,6 +1,6 @@
 // `curvsph validate ghost_cost`: Vela Vela et al. Table 1 — 1e6 random interior particles in
 // a cylinder, a sphere and a torus; time to place the ghosts with the density-preserving map
-// against the mirror (single thread, interleaved, best of the repeats).
+// against the mirror (single thread, interleaved, median of the paired time ratios).
 #include <fmt/format.h>
 
 #include <fstream>
@@ -47,8 +47,12 @@ StudyResult run_ghost_cost_study(const StudyContext& ctx) {
         "torus (a = 1, R = 3); time to place the ghosts (closest point, map, position) of the "
         "particles within 2h = "
      << opt.support << " of the wall, single thread, mirror and density_preserving interleaved, "
-     << "best of " << opt.repeats
-     << " repeats. Timings on a shared machine: compare the ratios, not the seconds. "
+     << opt.repeats
+     << " repeats, each timing both maps back to back (order alternated). The seconds are the "
+        "best of the repeats; the increase is the median over the repeats of the two maps' time "
+        "ratio within a repeat, which cancels the machine's drift between repeats (the best "
+        "times of a shared VM come from different moments and moved the figure by several "
+        "points between runs). "
         "Regenerate with `build/curvsph validate ghost_cost`.\n\n"
      << table << "\n"
      << summary_markdown(r.summary);

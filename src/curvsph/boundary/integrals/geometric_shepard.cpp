@@ -381,12 +381,26 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         if (slots[k].patch == pid) return &slots[k];
       return nullptr;
     };
+    // Candidates come cell by cell from the element cell list, so runs of them share a patch:
+    // the last patch's slot is kept at hand instead of searching the slots for every element.
+    // need_rest records whether anything is left for the quadrature; when nothing is (a
+    // particle whose faces all cover its support, the common case), the second pass over the
+    // candidates is skipped.
+    std::int32_t last_pid = -1;
+    Slot* last = nullptr;
+    bool need_rest = false;
     for (std::size_t j : candidates) {
       const std::int32_t pid = patch_[j];
-      if (pid < 0) continue;
-      Slot* s = slot_of(pid);
+      if (pid < 0) {
+        need_rest = true;
+        continue;
+      }
+      Slot* s = pid == last_pid ? last : slot_of(pid);
       if (!s) {
-        if (nslots == max_slots) continue;  // left to the quadrature (pass 2)
+        if (nslots == max_slots) {
+          need_rest = true;
+          continue;  // left to the quadrature (pass 2)
+        }
         s = &slots[nslots++];
         s->patch = pid;
         s->dn = el.normal[j].dot(x - el.vertices[j][0]);  // > 0 on the fluid side
@@ -400,6 +414,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           s->foot = x - s->dn * el.normal[j];
         }
       }
+      last_pid = pid;
+      last = s;
       if (s->state == Slot::pending) {
         const double room = clear_[j] - s->rho;
         if (room >= 0 && (s->foot - el.centre[j]).squaredNorm() <= room * room)
@@ -410,12 +426,20 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     for (std::size_t k = 0; k < nslots; ++k) {
       if (slots[k].state == Slot::covered) covered += half_space_part(slots[k].dn * F.inv_h);
       if (slots[k].state == Slot::pending) slots[k].state = Slot::rest;
+      if (slots[k].state == Slot::rest) need_rest = true;
     }
+    if (!need_rest) return 1.0 - covered;
     thread_local std::vector<std::size_t> rest;
     rest.clear();
+    last_pid = -1;
+    last = nullptr;
     for (std::size_t j : candidates) {
       const std::int32_t pid = patch_[j];
-      const Slot* s = pid < 0 ? nullptr : slot_of(pid);
+      if (pid >= 0 && pid != last_pid) {
+        last = slot_of(pid);
+        last_pid = pid;
+      }
+      const Slot* s = pid < 0 ? nullptr : last;
       if (!s || s->state == Slot::rest) rest.push_back(j);
     }
     if (rest.empty()) return 1.0 - covered;

@@ -284,6 +284,14 @@ std::vector<Vec3d> probe_points() {
   std::vector<Vec3d> pts = {{0, 0, 0},       {1, 0, 0},       {0.3, 0.2, 0.1}, {1.5, 1.5, 1},
                             {2.5, 2, 0.5},   {2.6, 2, 0.05},  {1, 1, 1e-3},    {2, 2, 1.2},
                             {3.5, 3.5, 2.5}, {1.5, 1.5, 0.0}, {0.25, 0.25, 0}, {2.51, 1.49, 0.3}};
+  // The rim path of GeometricShepard<3>: feet outside the faces they are cut by (beside and
+  // above the box's top edge and corner), three faces cut at once (the tank corner), and feet
+  // on a rim edge and a rim corner of the floor (x = 4 and y = 4 have no wall), which go to
+  // the element path.
+  for (const Vec3d& p : {Vec3d(2.6, 2.0, 1.05), Vec3d(1.45, 1.45, 1.02), Vec3d(2.55, 2.55, 0.5),
+                         Vec3d(0.1, 0.1, 0.1), Vec3d(0.05, 3.9, 0.3), Vec3d(2.0, 2.0, 1.3),
+                         Vec3d(4.0, 2.0, 0.5), Vec3d(4.0, 4.0, 0.7), Vec3d(4.3, 2.0, 0.5)})
+    pts.push_back(p);
   unsigned s = 12345;
   auto rnd = [&] {
     s = s * 1103515245u + 12345u;

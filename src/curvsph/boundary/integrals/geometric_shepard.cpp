@@ -91,73 +91,6 @@ GeometricShepard<D>::GeometricShepard(const BoundaryElements<D>& el, double h,
   }
 }
 
-template <>
-void GeometricShepard<3>::build_patches(const BoundaryElements<3>& el) {
-  // Patches: connected components of the twin graph over exact flat elements (gap 0, centre
-  // in the element's plane and inside it). Elements standing for a curved wall (gap > 0)
-  // stay out: their on-wall band is handled by geometric_impl.
-  const std::size_t n = el.size();
-  const double grid = 1e-9 * h_;
-  std::vector<std::int64_t> parent(n);
-  std::vector<unsigned char> flat(n, 0);
-  for (std::size_t j = 0; j < n; ++j) {
-    parent[j] = static_cast<std::int64_t>(j);
-    const bool exact = j >= el.gap.size() || el.gap[j] == 0.0;
-    const double off = std::abs(el.normal[j].dot(el.centre[j] - el.vertices[j][0]));
-    flat[j] = exact && off <= grid && point_in_polygon(el, j, el.centre[j], 0.0);
-  }
-  auto find = [&](std::int64_t a) {
-    while (parent[static_cast<std::size_t>(a)] != a) {
-      auto& pa = parent[static_cast<std::size_t>(a)];
-      pa = parent[static_cast<std::size_t>(pa)];  // path halving
-      a = pa;
-    }
-    return a;
-  };
-  for (std::size_t j = 0; j < n; ++j)
-    for (int k = 0; k < el.vertex_count[j]; ++k) {
-      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
-      if (o < 0 || !flat[j] || !flat[static_cast<std::size_t>(o)]) continue;
-      const std::int64_t a = find(static_cast<std::int64_t>(j)), b = find(o);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    }
-  patch_.assign(n, -1);
-  std::vector<std::int32_t> id(n, -1);
-  std::int32_t count = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!flat[j]) continue;
-    const auto root = static_cast<std::size_t>(find(static_cast<std::int64_t>(j)));
-    if (id[root] < 0) id[root] = count++;
-    patch_[j] = id[root];
-  }
-  // Rim of every patch: the edges whose twin is not a member of the same patch. clear_[j] =
-  // distance from centre j to its patch's rim (brute force over the rim, once at set-up:
-  // elements x rim edges of one patch). The patch is a union of elements glued along twin
-  // edges, so its boundary lies on rim edges and the disc of radius clear_[j] about the
-  // centre (inside element j) is inside the patch; a non-conforming mesh (T-junctions)
-  // leaves inner edges without twins, which only makes clear_ smaller (conservative).
-  std::vector<std::vector<std::array<Vec3d, 2>>> rim(static_cast<std::size_t>(count));
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    const auto& v = el.vertices[j];
-    const int m = el.vertex_count[j];
-    for (int k = 0; k < m; ++k) {
-      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
-      if (o >= 0 && patch_[static_cast<std::size_t>(o)] == patch_[j]) continue;
-      rim[static_cast<std::size_t>(patch_[j])].push_back(
-          {v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]});
-    }
-  }
-  clear_.assign(n, 0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    double d = std::numeric_limits<double>::infinity();
-    for (const auto& e : rim[static_cast<std::size_t>(patch_[j])])
-      d = std::min(d, segment_distance(e[0], e[1], el.centre[j]));
-    clear_[j] = d;
-  }
-}
-
 namespace {
 
 // Psi(q) = int_0^q F_Pext(s) s ds in units of h (3-D, DESIGN.md §4 kernel): inside the support
@@ -259,6 +192,35 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     std::array<double, 32> hv;  // H at the Gauss points of one piece (gauss_rule: n <= 32)
     const double inv_h = F.inv_h;
     const double max_piece = quad_.max_piece_over_h;  // in units of h
+    constexpr double inv4pi = 0.25 / std::numbers::pi;
+    // int H(p^2 + t^2) dt over [ta, tb] (q-units), in pieces split at t = 0 (the edge's closest
+    // point to the foot), each no longer than max_piece.
+    auto edge_integral = [&](double p, double ta, double tb, double d2, double psi0) {
+      double cuts[3] = {ta, tb, tb};
+      int ncut = 2;
+      if (ta < 0.0 && tb > 0.0) {
+        cuts[1] = 0.0;
+        ncut = 3;
+      }
+      double edge = 0;
+      for (int c = 0; c + 1 < ncut; ++c) {
+        const double len = cuts[c + 1] - cuts[c];
+        if (len <= 0) continue;
+        const int pieces = std::max(1, static_cast<int>(std::ceil(len / max_piece)));
+        const double dl = len / pieces;
+        for (int pc = 0; pc < pieces; ++pc) {
+          const double t0 = cuts[c] + pc * dl;
+          rim_values(g.x.data(), g.x.size(), t0, dl, p, d2, psi0, hv.data());
+          for (std::size_t i = 0; i < g.x.size(); ++i) edge += g.w[i] * dl * hv[i];
+        }
+      }
+      return edge;
+    };
+    // Van Oosterom & Strackee: minus the solid angle of the triangle (ys, a, b) about the unit
+    // vector fh from ys to its foot, a and b the unit vectors from ys to the edge's ends.
+    auto solid_angle_term = [](const Vec3d& fh, const Vec3d& a, const Vec3d& b) {
+      return -2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
+    };
     auto parts = [&](std::span<const std::size_t> near, const Vec3d& y, const Vec3d& ys) {
       thread_local std::vector<std::uint32_t> mark;
       thread_local std::uint32_t stamp = 0;
@@ -304,9 +266,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           if (tw >= 0 && mark[static_cast<std::size_t>(tw)] == stamp) continue;
           if (beyond(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]))
             continue;  // in closed form below
-          const Vec3d a = (v[static_cast<std::size_t>(k)] - ys).normalized();
-          const Vec3d b = (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized();
-          omega -= 2.0 * std::atan2(fh.dot(a.cross(b)), 1.0 + fh.dot(a) + a.dot(b) + b.dot(fh));
+          omega += solid_angle_term(fh, (v[static_cast<std::size_t>(k)] - ys).normalized(),
+                                    (v[static_cast<std::size_t>((k + 1) % m)] - ys).normalized());
         }
       }
       double total = omega / (4 * std::numbers::pi);
@@ -332,28 +293,9 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
             far_angle += std::atan2(p * (tb - ta), p * p + ta * tb);  // exact difference
             continue;
           }
-          double cuts[3] = {ta, tb, tb};
-          int ncut = 2;
-          if (ta < 0.0 && tb > 0.0) {
-            cuts[1] = 0.0;
-            ncut = 3;
-          }
-          double edge = 0;
-          for (int c = 0; c + 1 < ncut; ++c) {
-            const double len = cuts[c + 1] - cuts[c];
-            if (len <= 0) continue;
-            const int pieces = std::max(1, static_cast<int>(std::ceil(len / max_piece)));
-            const double dl = len / pieces;
-            for (int pc = 0; pc < pieces; ++pc) {
-              const double t0 = cuts[c] + pc * dl;
-              rim_values(g.x.data(), g.x.size(), t0, dl, p, d2, psi0, hv.data());
-              for (std::size_t i = 0; i < g.x.size(); ++i) edge += g.w[i] * dl * hv[i];
-            }
-          }
-          sum += p * edge;
+          sum += p * edge_integral(p, ta, tb, d2, psi0);
         }
         // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of far edges.
-        constexpr double inv4pi = 0.25 / std::numbers::pi;
         total += d * sum + (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far_angle;
       }
       return total;
@@ -367,9 +309,14 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     // face) takes the rim quadrature above, which is additive over elements.
     struct Slot {
       std::int32_t patch;
-      enum : unsigned char { none, pending, covered, rest } state;
+      // pending: not yet known to cover the disc; cut: its rim crosses the disc (rim path).
+      enum : unsigned char { none, pending, covered, cut, rest } state;
       double dn, rho;
-      Vec3d foot;
+      Vec3d foot, normal;
+      // Rim path sums: p int H dt, plane angles and solid-angle terms of the rim edges within
+      // 2h; inside: the foot lies in the face.
+      double poly, angle, omega;
+      bool inside;
     };
     constexpr std::size_t max_slots = 16;
     std::array<Slot, max_slots> slots;
@@ -412,6 +359,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           s->state = Slot::pending;
           s->rho = std::sqrt(support * support - s->dn * s->dn);
           s->foot = x - s->dn * el.normal[j];
+          s->normal = el.normal[j];
         }
       }
       last_pid = pid;
@@ -423,12 +371,89 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       }
     }
     double covered = 0;
+    // The rim path needs ys = y in the element path's terms: no candidate that could put x on
+    // a wall (outside any patch, left over by the slots, or a face x is on or behind).
+    bool blocked = need_rest;
+    bool any_pending = false;
     for (std::size_t k = 0; k < nslots; ++k) {
-      if (slots[k].state == Slot::covered) covered += half_space_part(slots[k].dn * F.inv_h);
-      if (slots[k].state == Slot::pending) slots[k].state = Slot::rest;
-      if (slots[k].state == Slot::rest) need_rest = true;
+      Slot& sl = slots[k];
+      if (sl.state == Slot::covered) covered += half_space_part(sl.dn * F.inv_h);
+      if (sl.state == Slot::rest) blocked = true;
+      if (sl.state == Slot::pending) any_pending = true;
     }
-    if (!need_rest) return 1.0 - covered;
+    bool any_cut = false;
+    if (any_pending) {
+      for (std::size_t k = 0; k < nslots; ++k) {
+        Slot& sl = slots[k];
+        if (sl.state != Slot::pending) continue;
+        if (blocked || rim_start_.empty() || !patch_rim_ok_[static_cast<std::size_t>(sl.patch)]) {
+          sl.state = Slot::rest;
+          continue;
+        }
+        sl.state = Slot::cut;
+        sl.poly = sl.angle = sl.omega = 0;
+        sl.inside = false;
+        any_cut = true;
+      }
+    }
+    if (any_cut) {
+      // The rim edges within 2h of x, face by face. An edge 2h or more away adds only its
+      // plane angle (see `parts`), and the angles of all edges left uncancelled by twins
+      // among a face's elements within the support close to 2 pi about a foot inside the
+      // face, 0 outside: so those far edges need not be visited. A foot on a rim edge (the
+      // angles do not close there) sends the face to the element path.
+      const double support2 = support * support;
+      const double guard = 1e-6 * h_;
+      int c0[3];
+      for (int d = 0; d < 3; ++d) {
+        const double r = std::floor((x[d] - rim_origin_[d]) / rim_cell_);
+        c0[d] = static_cast<int>(
+            std::clamp(r, -1.0, static_cast<double>(rim_dims_[static_cast<std::size_t>(d)])));
+      }
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dxx = -1; dxx <= 1; ++dxx) {
+            const int cx = c0[0] + dxx, cy = c0[1] + dy, cz = c0[2] + dz;
+            if (cx < 0 || cy < 0 || cz < 0 || cx >= rim_dims_[0] || cy >= rim_dims_[1] ||
+                cz >= rim_dims_[2])
+              continue;
+            const std::size_t cell =
+                (static_cast<std::size_t>(cz) * static_cast<std::size_t>(rim_dims_[1]) +
+                 static_cast<std::size_t>(cy)) *
+                    static_cast<std::size_t>(rim_dims_[0]) +
+                static_cast<std::size_t>(cx);
+            for (std::uint32_t q = rim_start_[cell]; q < rim_start_[cell + 1]; ++q) {
+              const RimEdge& e = rim_edges_[rim_index_[q]];
+              Slot* s = slot_of(e.patch);
+              if (!s || s->state != Slot::cut) continue;
+              const Vec3d ev = e.b - e.a;
+              const double t = std::clamp(ev.dot(x - e.a) / ev.squaredNorm(), 0.0, 1.0);
+              if ((e.a + t * ev - x).squaredNorm() >= support2) continue;
+              if (segment_distance(e.a, e.b, s->foot) <= guard) {
+                s->state = Slot::rest;
+                continue;
+              }
+              const Vec3d& f = s->foot;
+              const Vec3d en = ev.normalized();
+              const double p = s->normal.dot((e.a - f).cross(en)) * inv_h;
+              if (p != 0.0) {
+                const double ta = en.dot(e.a - f) * inv_h, tb = en.dot(e.b - f) * inv_h;
+                const double d = -s->dn * inv_h;
+                s->angle += std::atan2(p * (tb - ta), p * p + ta * tb);
+                s->poly += p * edge_integral(p, ta, tb, d * d, psi3(std::abs(d)));
+              }
+              s->omega +=
+                  solid_angle_term(-s->normal, (e.a - x).normalized(), (e.b - x).normalized());
+            }
+          }
+    }
+    need_rest = need_rest || blocked;
+    for (std::size_t k = 0; k < nslots; ++k)
+      if (slots[k].state == Slot::rest) need_rest = true;
+    any_cut = false;
+    for (std::size_t k = 0; k < nslots; ++k)
+      if (slots[k].state == Slot::cut) any_cut = true;
+    if (!need_rest && !any_cut) return 1.0 - covered;
     thread_local std::vector<std::size_t> rest;
     rest.clear();
     last_pid = -1;
@@ -439,16 +464,32 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         last = slot_of(pid);
         last_pid = pid;
       }
-      const Slot* s = pid < 0 ? nullptr : last;
+      Slot* s = pid < 0 ? nullptr : last;
+      if (s && s->state == Slot::cut) {
+        // The foot's element is within the support, hence among the candidates.
+        if (!s->inside && (s->foot - el.centre[j]).squaredNorm() <= radius_[j] * radius_[j] &&
+            point_in_polygon(el, j, s->foot, 1e-9 * h_))
+          s->inside = true;
+        continue;
+      }
       if (!s || s->state == Slot::rest) rest.push_back(j);
     }
-    if (rest.empty()) return 1.0 - covered;
+    double cut = 0;
+    for (std::size_t k = 0; k < nslots; ++k) {
+      const Slot& sl = slots[k];
+      if (sl.state != Slot::cut) continue;
+      const double d = -sl.dn * inv_h, psi0 = psi3(std::abs(d));
+      const double far = (sl.inside ? 2 * std::numbers::pi : 0.0) - sl.angle;
+      cut += sl.omega / (4 * std::numbers::pi) + d * sl.poly +
+             (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far;
+    }
+    if (rest.empty()) return 1.0 - covered - cut;
     auto for_rest = [&](const auto& fn) {
       for (std::size_t j : rest) fn(j);
     };
     return geometric_impl<D>(el, x, h_, quad_, for_rest, true, parts, radius_.data(),
                              reach_.data()) -
-           covered;
+           covered - cut;
   }
 }
 

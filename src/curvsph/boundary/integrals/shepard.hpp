@@ -17,6 +17,7 @@
 //                the paper's "gamma = 1/2 on the contour" rule (monolithic_contour_half).
 //  - volume:     gamma_i = sum_j W_ij V_j over fluid particles (Calderon eq. 4).
 //  - none:       gamma = 1.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -106,6 +107,24 @@ class GeometricShepard {
   // disc of radius clear_[j] about the centre lies inside the patch.
   std::vector<std::int32_t> patch_;
   std::vector<double> clear_;
+  // Rim path (3-D, operator()): a face whose support disc is cut by its rim is integrated
+  // over the rim edges within 2h alone; the rest of the boundary of its elements within the
+  // support, all of it 2h or more away, enters through the angle it subtends, which closes
+  // to 2 pi around a foot inside the face. rim_edges_ holds every patch's rim (edges whose
+  // twin is not in the patch), binned by midpoint on a grid of cells of rim_cell_ >= 2h + the
+  // longest rim edge (CSR: rim_start_, rim_index_), so a particle visits the 27 cells about
+  // it. patch_rim_ok_[p] = 0 where a rim edge has a twin outside the patch (the twin could
+  // cancel it): such a patch takes the element path.
+  struct RimEdge {
+    Vec3d a, b;
+    std::int32_t patch;
+  };
+  std::vector<RimEdge> rim_edges_;
+  std::vector<std::uint32_t> rim_start_, rim_index_;
+  Vec3d rim_origin_ = Vec3d::Zero();
+  std::array<int, 3> rim_dims_{0, 0, 0};
+  double rim_cell_ = 0;
+  std::vector<unsigned char> patch_rim_ok_;
 };
 
 template <int D>

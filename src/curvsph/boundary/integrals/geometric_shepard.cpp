@@ -360,14 +360,22 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           s->rho = std::sqrt(support * support - s->dn * s->dn);
           s->foot = x - s->dn * el.normal[j];
           s->normal = el.normal[j];
+          s->inside = false;
         }
       }
       last_pid = pid;
       last = s;
       if (s->state == Slot::pending) {
         const double room = clear_[j] - s->rho;
-        if (room >= 0 && (s->foot - el.centre[j]).squaredNorm() <= room * room)
+        const double fc2 = (s->foot - el.centre[j]).squaredNorm();
+        if (room >= 0 && fc2 <= room * room) {
           s->state = Slot::covered;
+        } else if (!s->inside && fc2 <= radius_[j] * radius_[j] &&
+                   point_in_polygon(el, j, s->foot, 1e-9 * h_)) {
+          // For the rim path: the foot lies in the face (its element is within the support,
+          // hence among the candidates).
+          s->inside = true;
+        }
       }
     }
     double covered = 0;
@@ -392,7 +400,6 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         }
         sl.state = Slot::cut;
         sl.poly = sl.angle = sl.omega = 0;
-        sl.inside = false;
         any_cut = true;
       }
     }
@@ -429,13 +436,15 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
               const Vec3d ev = e.b - e.a;
               const double t = std::clamp(ev.dot(x - e.a) / ev.squaredNorm(), 0.0, 1.0);
               if ((e.a + t * ev - x).squaredNorm() >= support2) continue;
-              if (segment_distance(e.a, e.b, s->foot) <= guard) {
-                s->state = Slot::rest;
-                continue;
-              }
               const Vec3d& f = s->foot;
               const Vec3d en = ev.normalized();
               const double p = s->normal.dot((e.a - f).cross(en)) * inv_h;
+              // |p| h is the foot's distance from the edge's line, a lower bound of its
+              // distance from the edge.
+              if (std::abs(p) * h_ <= guard && segment_distance(e.a, e.b, f) <= guard) {
+                s->state = Slot::rest;
+                continue;
+              }
               if (p != 0.0) {
                 const double ta = en.dot(e.a - f) * inv_h, tb = en.dot(e.b - f) * inv_h;
                 const double d = -s->dn * inv_h;
@@ -450,10 +459,16 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     need_rest = need_rest || blocked;
     for (std::size_t k = 0; k < nslots; ++k)
       if (slots[k].state == Slot::rest) need_rest = true;
-    any_cut = false;
-    for (std::size_t k = 0; k < nslots; ++k)
-      if (slots[k].state == Slot::cut) any_cut = true;
-    if (!need_rest && !any_cut) return 1.0 - covered;
+    double cut = 0;
+    for (std::size_t k = 0; k < nslots; ++k) {
+      const Slot& sl = slots[k];
+      if (sl.state != Slot::cut) continue;
+      const double d = -sl.dn * inv_h, psi0 = psi3(std::abs(d));
+      const double far = (sl.inside ? 2 * std::numbers::pi : 0.0) - sl.angle;
+      cut += sl.omega / (4 * std::numbers::pi) + d * sl.poly +
+             (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far;
+    }
+    if (!need_rest) return 1.0 - covered - cut;
     thread_local std::vector<std::size_t> rest;
     rest.clear();
     last_pid = -1;
@@ -464,24 +479,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
         last = slot_of(pid);
         last_pid = pid;
       }
-      Slot* s = pid < 0 ? nullptr : last;
-      if (s && s->state == Slot::cut) {
-        // The foot's element is within the support, hence among the candidates.
-        if (!s->inside && (s->foot - el.centre[j]).squaredNorm() <= radius_[j] * radius_[j] &&
-            point_in_polygon(el, j, s->foot, 1e-9 * h_))
-          s->inside = true;
-        continue;
-      }
+      const Slot* s = pid < 0 ? nullptr : last;
       if (!s || s->state == Slot::rest) rest.push_back(j);
-    }
-    double cut = 0;
-    for (std::size_t k = 0; k < nslots; ++k) {
-      const Slot& sl = slots[k];
-      if (sl.state != Slot::cut) continue;
-      const double d = -sl.dn * inv_h, psi0 = psi3(std::abs(d));
-      const double far = (sl.inside ? 2 * std::numbers::pi : 0.0) - sl.angle;
-      cut += sl.omega / (4 * std::numbers::pi) + d * sl.poly +
-             (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far;
     }
     if (rest.empty()) return 1.0 - covered - cut;
     auto for_rest = [&](const auto& fn) {

@@ -320,9 +320,10 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
             return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
                                                    : shepard_monolithic<D>(el_, cand, xs, h, quad_);
           };
-          const Real tol = Real(1e-6) * W_.h;
-          const bool unshifted = std::all_of(shift.begin(), shift.end(),
-                                             [&](const Vec<D>& s) { return s.norm() < tol; });
+          const Real tol = Real(1e-6) * W_.h, tol2 = tol * tol;
+          // Squared norms: this test runs over every candidate of every particle near a wall.
+          const bool unshifted = std::all_of(
+              shift.begin(), shift.end(), [&](const Vec<D>& s) { return s.squaredNorm() < tol2; });
           if (unshifted) {
             g = static_cast<Real>(eval(idx, x.template cast<double>()));
             break;

@@ -60,27 +60,9 @@ void GeometricShepard<3>::build_patches(const BoundaryElements<3>& el) {
   // edges, so its boundary lies on rim edges and the disc of radius clear_[j] about the
   // centre (inside element j) is inside the patch; a non-conforming mesh (T-junctions)
   // leaves inner edges without twins, which only makes clear_ smaller (conservative).
+  // The same rim edges, all patches together, feed the rim path's tables (see shepard.hpp);
+  // patch_rim_ok_ is cleared for a patch with a rim edge that has a twin elsewhere.
   std::vector<std::vector<std::array<Vec3d, 2>>> rim(static_cast<std::size_t>(count));
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    const auto& v = el.vertices[j];
-    const int m = el.vertex_count[j];
-    for (int k = 0; k < m; ++k) {
-      const std::int64_t o = twin_[4 * j + static_cast<std::size_t>(k)];
-      if (o >= 0 && patch_[static_cast<std::size_t>(o)] == patch_[j]) continue;
-      rim[static_cast<std::size_t>(patch_[j])].push_back(
-          {v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>((k + 1) % m)]});
-    }
-  }
-  clear_.assign(n, 0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    if (patch_[j] < 0) continue;
-    double d = std::numeric_limits<double>::infinity();
-    for (const auto& e : rim[static_cast<std::size_t>(patch_[j])])
-      d = std::min(d, segment_distance(e[0], e[1], el.centre[j]));
-    clear_[j] = d;
-  }
-  // Rim path tables (see shepard.hpp).
   patch_rim_ok_.assign(static_cast<std::size_t>(count), 1);
   rim_edges_.clear();
   double longest = 0;
@@ -95,11 +77,20 @@ void GeometricShepard<3>::build_patches(const BoundaryElements<3>& el) {
       if (o >= 0) patch_rim_ok_[static_cast<std::size_t>(patch_[j])] = 0;
       const Vec3d& a = v[static_cast<std::size_t>(k)];
       const Vec3d& b = v[static_cast<std::size_t>((k + 1) % m)];
+      rim[static_cast<std::size_t>(patch_[j])].push_back({a, b});
       rim_edges_.push_back({a, b, patch_[j]});
       longest = std::max(longest, (b - a).norm());
       lo = lo.cwiseMin(0.5 * (a + b));
       hi = hi.cwiseMax(0.5 * (a + b));
     }
+  }
+  clear_.assign(n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (patch_[j] < 0) continue;
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& e : rim[static_cast<std::size_t>(patch_[j])])
+      d = std::min(d, segment_distance(e[0], e[1], el.centre[j]));
+    clear_[j] = d;
   }
   rim_start_.clear();
   rim_index_.clear();

@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "curvsph/analysis/median.hpp"
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/geometry/cylinder.hpp"
 #include "curvsph/geometry/sphere.hpp"
@@ -66,11 +67,9 @@ GhostCostShape measure(const std::string& name, const Wall<3>& wall, const std::
     }
     ratio.push_back(dt[1] / dt[0]);
   }
-  const auto mid = ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2);
-  std::nth_element(ratio.begin(), mid, ratio.end());
   s.mirror_s = best[0];
   s.density_preserving_s = best[1];
-  s.increase_pct = 100.0 * (*mid - 1.0);
+  s.increase_pct = 100.0 * (median(ratio) - 1.0);
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "curvsph/analysis/median.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
 #include "curvsph/validation/study.hpp"
@@ -52,14 +53,9 @@ StudyResult run_shepard_cost_study(const StudyContext& ctx) {
     }
     for (int k = 1; k < 3; ++k) ratio[k].push_back(this_rep[k] / this_rep[0]);
   }
-  auto median_pct = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return 100 * ((n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2])) - 1);
-  };
   StudyResult r;
-  const double pct_volume = median_pct(ratio[1]);
-  const double pct_geometric = median_pct(ratio[2]);
+  const double pct_volume = 100 * (median(ratio[1]) - 1);
+  const double pct_geometric = 100 * (median(ratio[2]) - 1);
   r.metrics["particles"] = particles;
   r.metrics["steps_per_run"] = steps;
   r.metrics["repeats"] = repeats;

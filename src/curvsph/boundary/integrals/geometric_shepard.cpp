@@ -313,9 +313,10 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       enum : unsigned char { none, pending, covered, cut, rest } state;
       double dn, rho;
       Vec3d foot, normal;
-      // Rim path sums: p int H dt, plane angles and solid-angle terms of the rim edges within
-      // 2h; inside: the foot lies in the face.
-      double poly, angle, omega;
+      // Rim path: d = signed depth in h (< 0 on the fluid side, as in `parts`), psi0 =
+      // psi3(|d|); the sums of p int H dt, plane angles and solid-angle terms of the rim edges
+      // within 2h; inside: the foot lies in the face.
+      double d, psi0, poly, angle, omega;
       bool inside;
     };
     constexpr std::size_t max_slots = 16;
@@ -399,6 +400,8 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           continue;
         }
         sl.state = Slot::cut;
+        sl.d = -sl.dn * inv_h;
+        sl.psi0 = psi3(std::abs(sl.d));
         sl.poly = sl.angle = sl.omega = 0;
         any_cut = true;
       }
@@ -424,11 +427,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
             if (cx < 0 || cy < 0 || cz < 0 || cx >= rim_dims_[0] || cy >= rim_dims_[1] ||
                 cz >= rim_dims_[2])
               continue;
-            const std::size_t cell =
-                (static_cast<std::size_t>(cz) * static_cast<std::size_t>(rim_dims_[1]) +
-                 static_cast<std::size_t>(cy)) *
-                    static_cast<std::size_t>(rim_dims_[0]) +
-                static_cast<std::size_t>(cx);
+            const std::size_t cell = rim_cell_index(cx, cy, cz);
             for (std::uint32_t q = rim_start_[cell]; q < rim_start_[cell + 1]; ++q) {
               const RimEdge& e = rim_edges_[rim_index_[q]];
               Slot* s = slot_of(e.patch);
@@ -447,26 +446,24 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
               }
               if (p != 0.0) {
                 const double ta = en.dot(e.a - f) * inv_h, tb = en.dot(e.b - f) * inv_h;
-                const double d = -s->dn * inv_h;
                 s->angle += std::atan2(p * (tb - ta), p * p + ta * tb);
-                s->poly += p * edge_integral(p, ta, tb, d * d, psi3(std::abs(d)));
+                s->poly += p * edge_integral(p, ta, tb, s->d * s->d, s->psi0);
               }
               s->omega +=
                   solid_angle_term(-s->normal, (e.a - x).normalized(), (e.b - x).normalized());
             }
           }
     }
-    need_rest = need_rest || blocked;
-    for (std::size_t k = 0; k < nslots; ++k)
-      if (slots[k].state == Slot::rest) need_rest = true;
+    // Left to the element path: everything `blocked` names, and the faces sent there above.
+    need_rest = blocked;
     double cut = 0;
     for (std::size_t k = 0; k < nslots; ++k) {
       const Slot& sl = slots[k];
+      if (sl.state == Slot::rest) need_rest = true;
       if (sl.state != Slot::cut) continue;
-      const double d = -sl.dn * inv_h, psi0 = psi3(std::abs(d));
       const double far = (sl.inside ? 2 * std::numbers::pi : 0.0) - sl.angle;
-      cut += sl.omega / (4 * std::numbers::pi) + d * sl.poly +
-             (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far;
+      cut += sl.omega / (4 * std::numbers::pi) + sl.d * sl.poly +
+             (sl.d * (1.5 * inv4pi - sl.psi0) - std::copysign(inv4pi, sl.d)) * far;
     }
     if (!need_rest) return 1.0 - covered - cut;
     thread_local std::vector<std::size_t> rest;

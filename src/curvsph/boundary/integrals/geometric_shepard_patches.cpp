@@ -104,13 +104,11 @@ void GeometricShepard<3>::build_patches(const BoundaryElements<3>& el) {
   for (int d = 0; d < 3; ++d)
     rim_dims_[static_cast<std::size_t>(d)] = static_cast<int>(extent[d] / rim_cell_) + 1;
   auto cell_of = [&](const Vec3d& p) {
-    std::size_t c = 0;
-    for (int d = 2; d >= 0; --d) {
-      const int dim = rim_dims_[static_cast<std::size_t>(d)];
-      const int i = std::clamp(static_cast<int>((p[d] - rim_origin_[d]) / rim_cell_), 0, dim - 1);
-      c = c * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i);
-    }
-    return c;
+    int i[3];
+    for (int d = 0; d < 3; ++d)
+      i[d] = std::clamp(static_cast<int>((p[d] - rim_origin_[d]) / rim_cell_), 0,
+                        rim_dims_[static_cast<std::size_t>(d)] - 1);
+    return rim_cell_index(i[0], i[1], i[2]);
   };
   const std::size_t cells = static_cast<std::size_t>(rim_dims_[0]) *
                             static_cast<std::size_t>(rim_dims_[1]) *

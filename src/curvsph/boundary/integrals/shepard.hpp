@@ -125,6 +125,13 @@ class GeometricShepard {
   std::array<int, 3> rim_dims_{0, 0, 0};
   double rim_cell_ = 0;
   std::vector<unsigned char> patch_rim_ok_;
+  // Index of rim cell (cx, cy, cz), all within rim_dims_ (x fastest).
+  std::size_t rim_cell_index(int cx, int cy, int cz) const {
+    return (static_cast<std::size_t>(cz) * static_cast<std::size_t>(rim_dims_[1]) +
+            static_cast<std::size_t>(cy)) *
+               static_cast<std::size_t>(rim_dims_[0]) +
+           static_cast<std::size_t>(cx);
+  }
 };
 
 template <int D>

@@ -210,7 +210,14 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "fourtakas` (the density diffusion less its hydrostatic part, as AQUAgpusph's "
         "hydrostatic delta-SPH correction), `boundary.wall_force: true` (off in the paper's tank) "
         "and `artificial_viscosity.alpha: 0.01` (a momentum diffusion; the issue's tank has "
-        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19).\n\n";
+        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19).\n\n"
+        "Why h/dx = 4 fails (findings.md, session 21): the boundary integrals hold a particle off "
+        "a wall by the 2 p_i part of the symmetric pressure term, a static stiffness measured as "
+        "C p_i / (rho0 h^2) with C = 1.44, 0.79 and 0.50 at h/dx = 2, 3 and 4, so at a contact "
+        "line (p_i small) and h/dx = 4 it is an order of magnitude weaker than at h/dx = 2 and "
+        "no stronger than the free surface's own start-up imbalance there; the failure does not "
+        "move with the viscosity (the paper's tank is 92 mm deep: the same tank at 12.7 times "
+        "the viscosity crosses at the same time, N = 9800) nor with c0.\n\n";
   if (ctx.quick) md << "**Quick run** (`--quick`): N ~ 2500, t sqrt(g/H) = 2 only.\n\n";
   std::string shortened;  // "to 5 at h/dx = 3 and 2 at h/dx = 4", from the runs list
   for (const auto& run : runs)

@@ -76,7 +76,11 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
             // lines with each of the changes tried against it (findings.md, sessions 16, 19).
             {446, 4, "geometric", 2.0, "fourtakas", "density.diffusion_term=fourtakas"},
             {446, 4, "geometric", 2.0, "wall_force", "boundary.wall_force=true"},
-            {446, 4, "geometric", 2.0, "av", "artificial_viscosity.alpha=0.01"}};
+            {446, 4, "geometric", 2.0, "av", "artificial_viscosity.alpha=0.01"},
+            // The paper's 92 mm tank at the 0.5 m: with c0 = 10 sqrt(gH) the same
+            // tank at (0.5/0.092)^1.5 = 12.67 times the viscosity (findings.md, session 21);
+            // asked to 10, it crosses a side wall at 6.31 (1942 s on 2 threads).
+            {446, 4, "geometric", 10.0, "paper_re", "fluids.0.viscosity=0.011327"}};
   }
   const double H = 0.5, g = 9.81;
   const double t_ref = std::sqrt(H / g);
@@ -210,14 +214,19 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "fourtakas` (the density diffusion less its hydrostatic part, as AQUAgpusph's "
         "hydrostatic delta-SPH correction), `boundary.wall_force: true` (off in the paper's tank) "
         "and `artificial_viscosity.alpha: 0.01` (a momentum diffusion; the issue's tank has "
-        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19).\n\n"
+        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19). The row "
+        "`n446_h4_geometric_paper_re` is the paper's tank at the issue's scale: Calderon's is "
+        "92 mm deep, which with c0 = 10 sqrt(gH) is this tank at (0.5/0.092)^1.5 = 12.67 times "
+        "the viscosity (`fluids.0.viscosity: 0.011327`, the paper's Reynolds number; "
+        "findings.md, session 21).\n\n"
         "Why h/dx = 4 fails (findings.md, session 21): the boundary integrals hold a particle off "
         "a wall by the 2 p_i part of the symmetric pressure term, a static stiffness measured as "
         "C p_i / (rho0 h^2) with C = 1.44, 0.79 and 0.50 at h/dx = 2, 3 and 4, so at a contact "
         "line (p_i small) and h/dx = 4 it is an order of magnitude weaker than at h/dx = 2 and "
-        "no stronger than the free surface's own start-up imbalance there; the failure does not "
-        "move with the viscosity (the paper's tank is 92 mm deep: the same tank at 12.7 times "
-        "the viscosity crosses at the same time, N = 9800) nor with c0.\n\n";
+        "no stronger than the free surface's own start-up imbalance there. The paper's tank (92 mm "
+        "deep: this tank at 12.7 times the viscosity, row `n446_h4_geometric_paper_re`) crosses "
+        "later, at t sqrt(g/H) = 6.31 instead of 1.66 (at N = 9800: 0.676 s instead of 0.653), "
+        "but crosses; twice the c0 changes nothing (N = 9800: 0.665 s).\n\n";
   if (ctx.quick) md << "**Quick run** (`--quick`): N ~ 2500, t sqrt(g/H) = 2 only.\n\n";
   std::string shortened;  // "to 5 at h/dx = 3 and 2 at h/dx = 4", from the runs list
   for (const auto& run : runs)

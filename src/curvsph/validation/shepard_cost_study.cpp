@@ -87,11 +87,11 @@ StudyResult run_shepard_cost_study(const StudyContext& ctx) {
       "| Shepard factor | s / step | boundary s / step | over gamma = 1 (%) | paper, 0.55/45, "
       "h/dr = 2 (s / step) |\n|---|---|---|---|---|\n";
   const char* paper[] = {"0.43", "0.50 (former)", "0.48 (new)"};
+  const double pct[3] = {0.0, pct_volume, pct_geometric};
   for (int k = 0; k < 3; ++k) {
-    const double pct = k == 0 ? 0.0 : (k == 1 ? pct_volume : pct_geometric);
-    csv << fmt::format("{},{:.6f},{:.6f},{:.3f}\n", modes[k], best[k], boundary[k], pct);
+    csv << fmt::format("{},{:.6f},{:.6f},{:.3f}\n", modes[k], best[k], boundary[k], pct[k]);
     table += fmt::format("| {} | {:.4f} | {:.4f} | {:+.1f} | {} |\n", modes[k], best[k],
-                         boundary[k], pct, paper[k]);
+                         boundary[k], pct[k], paper[k]);
   }
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Cost of the Shepard factor (Calderon et al. Table 1)\n\n"

@@ -193,6 +193,11 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
     const double inv_h = F.inv_h;
     const double max_piece = quad_.max_piece_over_h;  // in units of h
     constexpr double inv4pi = 0.25 / std::numbers::pi;
+    // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of edges 2h or more from the point
+    // (depth d in h, psi0 = psi3(|d|)): the closed form of their contribution.
+    auto far_edges = [&](double d, double psi0, double angle) {
+      return (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * angle;
+    };
     // int H(p^2 + t^2) dt over [ta, tb] (q-units), in pieces split at t = 0 (the edge's closest
     // point to the foot), each no longer than max_piece.
     auto edge_integral = [&](double p, double ta, double tb, double d2, double psi0) {
@@ -295,8 +300,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
           }
           sum += p * edge_integral(p, ta, tb, d2, psi0);
         }
-        // d [3/(8 pi) - psi3(|d|) - 1/(4 pi |d|)] per radian of far edges.
-        total += d * sum + (d * (1.5 * inv4pi - psi0) - std::copysign(inv4pi, d)) * far_angle;
+        total += d * sum + far_edges(d, psi0, far_angle);
       }
       return total;
     };
@@ -430,7 +434,12 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
             const std::size_t cell = rim_cell_index(cx, cy, cz);
             for (std::uint32_t q = rim_start_[cell]; q < rim_start_[cell + 1]; ++q) {
               const RimEdge& e = rim_edges_[rim_index_[q]];
-              Slot* s = slot_of(e.patch);
+              // Edges of one cell mostly share a patch: keep the last slot at hand.
+              if (e.patch != last_pid) {
+                last = slot_of(e.patch);
+                last_pid = e.patch;
+              }
+              Slot* s = last;
               if (!s || s->state != Slot::cut) continue;
               const Vec3d ev = e.b - e.a;
               const double t = std::clamp(ev.dot(x - e.a) / ev.squaredNorm(), 0.0, 1.0);
@@ -462,8 +471,7 @@ double GeometricShepard<D>::operator()(const BoundaryElements<D>& el,
       if (sl.state == Slot::rest) need_rest = true;
       if (sl.state != Slot::cut) continue;
       const double far = (sl.inside ? 2 * std::numbers::pi : 0.0) - sl.angle;
-      cut += sl.omega / (4 * std::numbers::pi) + sl.d * sl.poly +
-             (sl.d * (1.5 * inv4pi - sl.psi0) - std::copysign(inv4pi, sl.d)) * far;
+      cut += sl.omega / (4 * std::numbers::pi) + sl.d * sl.poly + far_edges(sl.d, sl.psi0, far);
     }
     if (!need_rest) return 1.0 - covered - cut;
     thread_local std::vector<std::size_t> rest;

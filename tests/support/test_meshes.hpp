@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,34 @@ inline TestMesh uv_sphere(double R, double step) {
   return m;
 }
 
+// Icosphere of radius R: each face of the icosahedron split into n^2 triangles, vertices
+// projected on the sphere (edges of about 63.4 / n degrees; valence 5 at the 12 corners).
+inline TestMesh icosphere(double R, int n) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  const Vec3d c[12] = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                       {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                        {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                        {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                        {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  TestMesh m;
+  for (const auto& F : f) {
+    // Points i a + j b + k c (i + j + k = n) of the flat face, then on the sphere. Rounding
+    // the flat point to a lattice of 1e-12 first makes the shared edges' points bitwise equal.
+    const auto P = [&](int i, int j) {
+      Vec3d q = (double(n - i - j) * c[F[0]] + double(i) * c[F[1]] + double(j) * c[F[2]]) / n;
+      for (int k = 0; k < 3; ++k) q[k] = std::round(q[k] * 1e12) / 1e12;
+      return Vec3d(R * q.normalized());
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; i + j < n; ++j) {
+        m.add(P(i, j), P(i + 1, j), P(i, j + 1), Vec3d::Zero());
+        if (i + j + 2 <= n) m.add(P(i + 1, j), P(i + 1, j + 1), P(i, j + 1), Vec3d::Zero());
+      }
+  }
+  return m;
+}
+
 // Cylinder of radius R about the z axis, z in [-L/2, L/2], `step` degrees around, rows of about
 // the same arc length along the axis, closed by fans to the caps' centres.
 inline TestMesh capped_cylinder(double R, double L, double step) {
@@ -109,6 +138,35 @@ inline TestMesh capped_cylinder(double R, double L, double step) {
     m.add(Vec3d(0, 0, -L / 2), P(0, j), P(0, j + 1), Vec3d::Zero());
     m.add(Vec3d(0, 0, L / 2), P(nz, j), P(nz, j + 1), Vec3d::Zero());
   }
+  return m;
+}
+
+// Torus about the z axis (major radius R, minor a): a grid of `step` degrees in the poloidal
+// angle theta (0 on the outer equator) and the toroidal angle phi, each grid point moved in
+// (theta, phi) by up to `jitter` of a step at random (so it stays on the torus), squares split
+// into two triangles: an irregular mesh when jitter > 0.
+inline TestMesh torus_mesh(double R, double a, double step, double jitter, unsigned seed) {
+  const int n = int(std::lround(360.0 / step));
+  const double h = 2 * std::numbers::pi / n;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::vector<Vec3d> g(n * n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double th = (i + jitter * U(rng)) * h, ph = (j + jitter * U(rng)) * h;
+      g[i * n + j] = Vec3d((R + a * std::cos(th)) * std::cos(ph),
+                           (R + a * std::cos(th)) * std::sin(ph), a * std::sin(th));
+    }
+  TestMesh m;
+  const auto G = [&](int i, int j) { return g[(i % n) * n + j % n]; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      // Away from the tube's centre circle at this phi (convex across the tube).
+      const double ph = (j + 0.5) * h;
+      const Vec3d centre(R * std::cos(ph), R * std::sin(ph), 0);
+      m.add(G(i, j), G(i + 1, j), G(i + 1, j + 1), centre);
+      m.add(G(i, j), G(i + 1, j + 1), G(i, j + 1), centre);
+    }
   return m;
 }
 

@@ -18,20 +18,23 @@ struct Fit {
   Vec3d t1, t2, n;                                    // the frame, n the fitted normal
 };
 
-// Least-squares quadric z = a x^2 + b xy + c y^2 (+ d x + e y where there are enough points)
-// over the points q around p, in the frame of the unit normal n; returns the Hessian and the
-// normal of the fitted surface at p. Coordinates are scaled by the mean tangential distance
-// so the system is well conditioned at any mesh size; a complete orthogonal decomposition
-// gives the minimum-norm solution where the points do not determine every coefficient
-// (collinear neighbours), which is zero curvature on flat data.
-Fit fit_quadric(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& q) {
+// Least-squares jet z = a x^2 + b xy + c y^2 + d x + e y + (cubic terms) over the points q
+// around p, in the frame of the unit normal n; returns the Hessian and the normal of the fitted
+// surface at p. The cubic terms (Cazals & Pouget 2005, "Estimating differential quantities
+// using polynomial fitting of osculating jets", CAGD 22: order-3 jets give curvatures with an
+// O(h^2) error where a quadric gives O(h) on a neighbourhood that is not symmetric) are fitted
+// where there are 14 points or more, the linear ones from 6, else the three quadratic ones.
+// Coordinates are scaled by the mean tangential distance so the system is well conditioned at any
+// mesh size; a complete orthogonal decomposition gives the minimum-norm solution where the points
+// do not determine every coefficient (collinear neighbours), which is zero curvature on flat data.
+Fit fit_jet(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& q) {
   Fit f;
   f.n = n;
   f.t1 = any_perpendicular(n);
   f.t2 = n.cross(f.t1);
   if (q.empty()) return f;
   const int m = static_cast<int>(q.size());
-  const int k = m >= 5 ? 5 : 3;
+  const int k = m >= 14 ? 9 : m >= 6 ? 5 : 3;
   Eigen::MatrixXd A(m, k);
   Eigen::VectorXd b(m);
   double s = 0.0;
@@ -43,13 +46,14 @@ Fit fit_quadric(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& q) {
     A(i, 0) = x * x;
     A(i, 1) = x * y;
     A(i, 2) = y * y;
-    if (k == 5) A(i, 3) = x, A(i, 4) = y;
+    if (k >= 5) A(i, 3) = x, A(i, 4) = y;
+    if (k == 9) A(i, 5) = x * x * x, A(i, 6) = x * x * y, A(i, 7) = x * y * y, A(i, 8) = y * y * y;
     b(i) = d.dot(n);
   }
   const Eigen::VectorXd c = A.completeOrthogonalDecomposition().solve(b);
   f.hessian << 2 * c(0), c(1), c(1), 2 * c(2);
   f.hessian /= s;
-  if (k == 5) f.n = (n - c(3) * f.t1 - c(4) * f.t2).normalized();
+  if (k >= 5) f.n = (n - c(3) * f.t1 - c(4) * f.t2).normalized();
   return f;
 }
 
@@ -114,7 +118,9 @@ MeshCurvature mesh_curvature(const std::vector<Vec3d>& v,
         n += std::acos(std::clamp(e1.dot(e2), -1.0, 1.0)) * face_n[t];
       }
       // The 2-ring seen from this sector: faces reached across non-crease edges that touch
-      // a vertex of the sector's 1-ring.
+      // a vertex of the sector's 1-ring. (Growing it where its points spread much less one
+      // way than the other, as next to the poles of a latitude-longitude mesh, was measured
+      // worse: the larger ring's truncation error outweighs what it gains.)
       ring_mark[p] = s;
       for (int t : fan)
         for (int c = 0; c < 3; ++c) ring_mark[tris[t][c]] = s;
@@ -143,8 +149,8 @@ MeshCurvature mesh_curvature(const std::vector<Vec3d>& v,
       if (n.norm() > 0) {
         // Fit, tilt the frame to the fitted normal, fit again: the Hessian in a frame whose
         // z axis is the surface normal is the shape operator (no metric correction left).
-        Fit f = fit_quadric(v[p], n.normalized(), pts);
-        f = fit_quadric(v[p], f.n, pts);
+        Fit f = fit_jet(v[p], n.normalized(), pts);
+        f = fit_jet(v[p], f.n, pts);
         const Eigen::Matrix<double, 3, 2> B =
             (Eigen::Matrix<double, 3, 2>() << f.t1, f.t2).finished();
         const Eigen::Matrix3d M = B * f.hessian * B.transpose();

@@ -10,8 +10,6 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
-#include <Poly_Triangulation.hxx>
-#include <RWStl.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -22,6 +20,7 @@
 #include <filesystem>
 #include <map>
 
+#include "curvsph/cad/stl_reader.hpp"
 #include "curvsph/cad/trimmed_face_wall.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/trimesh_wall.hpp"
@@ -194,21 +193,12 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
     if (!std::filesystem::exists(path))
       throw InputError(file, ctx.key("file"),
                        fmt::format("CAD file '{}' not found", path.string()));
-    Handle(Poly_Triangulation) tri = RWStl::ReadFile(path.string().c_str());
-    if (tri.IsNull() || tri->NbTriangles() == 0)
-      throw InputError(file, ctx.key("file"),
-                       fmt::format("cannot read STL file '{}'", path.string()));
-    std::vector<Vec3d> v(tri->NbNodes());
-    for (int i = 1; i <= tri->NbNodes(); ++i) {
-      const gp_Pnt p = tri->Node(i);
-      v[i - 1] = scale * Vec3d(p.X(), p.Y(), p.Z());
-    }
-    std::vector<std::array<int, 3>> t(tri->NbTriangles());
-    for (int i = 1; i <= tri->NbTriangles(); ++i) {
-      int a, b, c;
-      tri->Triangle(i).Get(a, b, c);
-      t[i - 1] = {a - 1, b - 1, c - 1};
-    }
+    // Both fluid sides need a closed surface: the sign of the distance is only defined there.
+    cad::StlMesh mesh = cad::read_stl(path.string(), file, ctx.key("file"));
+    cad::require_closed(mesh, path.string(), file, ctx.key("file"));
+    std::vector<Vec3d> v = std::move(mesh.vertices);
+    for (Vec3d& p : v) p *= scale;
+    std::vector<std::array<int, 3>> t = std::move(mesh.triangles);
     return {std::make_shared<TriMeshWall>(
         std::move(v), std::move(t),
         fs == cad::FluidSide::inside ? TriMeshWall::Side::inside : TriMeshWall::Side::outside)};

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 namespace curvsph {
 namespace {
@@ -44,27 +43,28 @@ TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int
       sign_(fluid == Side::outside ? 1.0 : -1.0) {
   face_n_.resize(tris_.size());
   vert_n_.assign(v_.size(), Vec3d::Zero());
-  edge_n_.resize(tris_.size());
-  std::map<std::pair<int, int>, Vec3d> edge_sum;
   std::vector<Aabb<3>> boxes(tris_.size());
   for (std::size_t t = 0; t < tris_.size(); ++t) {
     const auto& T = tris_[t];
-    const Vec3d n = (v_[T[1]] - v_[T[0]]).cross(v_[T[2]] - v_[T[0]]);
-    face_n_[t] = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::UnitZ();
+    // A degenerate triangle has no normal: zero, so it adds nothing to the pseudo-normals.
+    face_n_[t] = (v_[T[1]] - v_[T[0]]).cross(v_[T[2]] - v_[T[0]]).normalized();
     for (int i = 0; i < 3; ++i) {
       const Vec3d e1 = (v_[T[(i + 1) % 3]] - v_[T[i]]).normalized();
       const Vec3d e2 = (v_[T[(i + 2) % 3]] - v_[T[i]]).normalized();
       vert_n_[T[i]] += std::acos(std::clamp(e1.dot(e2), -1.0, 1.0)) * face_n_[t];
-      const auto key = std::minmax(T[i], T[(i + 1) % 3]);
-      edge_sum[{key.first, key.second}] += face_n_[t];
       boxes[t].extend(v_[T[i]]);
     }
   }
+  // Edge pseudo-normal: the sum of the normals of the two faces sharing the edge (the face's
+  // own normal alone on a boundary or non-manifold edge, which a closed mesh does not have).
+  const MeshEdges edges = mesh_edges(tris_);
+  edge_n_.resize(tris_.size());
   for (std::size_t t = 0; t < tris_.size(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const auto key = std::minmax(tris_[t][i], tris_[t][(i + 1) % 3]);
-      edge_n_[t][i] = edge_sum[{key.first, key.second}];
+      const int u = edges.across[t][i];
+      edge_n_[t][i] = u >= 0 ? Vec3d(face_n_[t] + face_n_[u]) : face_n_[t];
     }
+  curv_ = mesh_curvature(v_, tris_, face_n_, edges, kFeatureAngle);
   bvh_.build(boxes, 4);
 }
 
@@ -91,8 +91,40 @@ WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
   w.foot = foot;
   w.normal = pseudo;
   w.distance = std::copysign(best, (x - foot).dot(pseudo));
-  w.dir1 = (v_[T[1]] - v_[T[0]]).normalized();
-  w.dir2 = w.normal.cross(w.dir1).normalized();
+  // Curvature: the corner tensors interpolated at the foot's barycentric coordinates,
+  // restricted to the tangent plane of the returned normal; the fluid side's sign (the
+  // tensors are relative to the triangles' own normals).
+  const Vec3d a = v_[T[0]], e1 = v_[T[1]] - a, e2 = v_[T[2]] - a, r = foot - a;
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+  const double det = d11 * d22 - d12 * d12;
+  double b1 = 0.0, b2 = 0.0;
+  if (det > 0) {
+    b1 = std::clamp((d22 * r.dot(e1) - d12 * r.dot(e2)) / det, 0.0, 1.0);
+    b2 = std::clamp((d11 * r.dot(e2) - d12 * r.dot(e1)) / det, 0.0, 1.0 - b1);
+  }
+  const std::array<double, 3> bary{1.0 - b1 - b2, b1, b2};
+  std::array<double, 6> K{};
+  for (int c = 0; c < 3; ++c) {
+    const auto& Kc = curv_.tensor[curv_.corner_sector[best_t][c]];
+    for (int k = 0; k < 6; ++k) K[k] += bary[c] * Kc[k];
+  }
+  const auto form = [&](const Vec3d& p, const Vec3d& q) {
+    return sign_ *
+           (K[0] * p.x() * q.x() + K[1] * p.y() * q.y() + K[2] * p.z() * q.z() +
+            K[3] * (p.x() * q.y() + p.y() * q.x()) + K[4] * (p.x() * q.z() + p.z() * q.x()) +
+            K[5] * (p.y() * q.z() + p.z() * q.y()));
+  };
+  const Vec3d t1 =
+      w.normal.cross(std::abs(w.normal.x()) < 0.6 ? Vec3d::UnitX() : Vec3d::UnitY()).normalized();
+  const Vec3d t2 = w.normal.cross(t1);
+  const double h11 = form(t1, t1), h12 = form(t1, t2), h22 = form(t2, t2);
+  // Eigen-pairs of the symmetric 2x2 [[h11, h12], [h12, h22]] in closed form.
+  const double mean = 0.5 * (h11 + h22), rad = std::hypot(0.5 * (h11 - h22), h12);
+  const double phi = 0.5 * std::atan2(2.0 * h12, h11 - h22);
+  w.k1 = mean + rad;
+  w.k2 = mean - rad;
+  w.dir1 = std::cos(phi) * t1 + std::sin(phi) * t2;
+  w.dir2 = w.normal.cross(w.dir1);
   w.param = {static_cast<double>(best_t), 0.0};
   w.param_count = 0;
   return w;
@@ -104,7 +136,7 @@ std::string TriMeshWall::describe() const {
 }
 
 double TriMeshWall::min_radius_of_curvature() const {
-  return std::numeric_limits<double>::infinity();
+  return curv_.max_abs > 0 ? 1.0 / curv_.max_abs : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace curvsph

@@ -1,7 +1,9 @@
 #pragma once
 // A 3-D wall made of triangles (STL import): closest point on triangles found through a BVH,
 // normal = the face normal inside a triangle and the angle-weighted pseudo-normal on edges and
-// vertices (Baerentzen & Aanaes 2005: its sign is the correct inside/outside test), curvature 0.
+// vertices (Baerentzen & Aanaes 2005: its sign is the correct inside/outside test on a closed,
+// consistently oriented mesh), principal curvatures estimated per vertex at construction
+// (mesh_curvature.hpp) and interpolated barycentrically over the triangle at the foot point.
 // Triangles are oriented counter-clockwise seen from outside (STL convention); `fluid`
 // says whether the fluid is outside (normals as given) or inside (flipped).
 #include <Eigen/Geometry>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "curvsph/geometry/bvh.hpp"
+#include "curvsph/geometry/mesh_curvature.hpp"
 #include "curvsph/geometry/wall.hpp"
 
 namespace curvsph {
@@ -17,6 +20,10 @@ namespace curvsph {
 class TriMeshWall : public Wall<3> {
  public:
   enum class Side { outside, inside };
+  // Edges whose faces turn by more than this are creases: the curvature estimate does not
+  // reach across them (30 degrees, the usual feature angle of mesh tools such as VTK's).
+  static constexpr double kFeatureAngle = 30.0 * 3.14159265358979323846 / 180.0;
+
   TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int, 3>> triangles, Side fluid);
 
   WallPoint<3> closest(const Vec3d& x, const ParamSeed& seed = {}) const override;
@@ -24,6 +31,8 @@ class TriMeshWall : public Wall<3> {
   double min_radius_of_curvature() const override;
 
   std::size_t triangle_count() const { return tris_.size(); }
+  const std::vector<Vec3d>& vertices() const { return v_; }
+  const std::vector<std::array<int, 3>>& triangles() const { return tris_; }
 
  private:
   std::vector<Vec3d> v_;
@@ -31,6 +40,7 @@ class TriMeshWall : public Wall<3> {
   std::vector<Vec3d> face_n_;
   std::vector<Vec3d> vert_n_;                 // angle-weighted pseudo-normals
   std::vector<std::array<Vec3d, 3>> edge_n_;  // per triangle edge (i, i+1): sum of both faces
+  MeshCurvature curv_;
   Bvh<3> bvh_;
   double sign_;
 };

@@ -60,6 +60,10 @@ class BoundaryModel {
                               ShiftScratch<D>& sums) const = 0;
   // Indices of fluid particles found on the wrong side of a wall by the last prepare().
   virtual const std::vector<Index>& penetrated() const = 0;
+  // Appends to `out` the fluid particles closer than `reach` to a wall at the last prepare(),
+  // the penetrated ones included (any order, possibly repeated): the candidates of the wall
+  // contact (solver/stray_particles.hpp).
+  virtual void within(Real reach, std::vector<Index>& out) const = 0;
   // Seconds, accumulated over every prepare(), spent computing the Shepard factor gamma (a part
   // of the pre-pass; 0 for models without one). Issue 7 names the geometric Shepard factor's
   // share of a step, and the rest of the pre-pass (the particle-element pair search) is paid

@@ -289,20 +289,79 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     c.fluids.push_back(s);
   }
 
+  // Gravity is read here (before the fluids' sound speed and the density method need it).
+  c.gravity = top.vector("gravity", D, Vec3d::Zero());
+  for (int d = 0; d < D; ++d)
+    if (c.gravity[d] != 0 && !c.periodic[static_cast<std::size_t>(d)])
+      c.free_surface_defaults = true;
+
   const Keys eos = top.sub("eos");
-  if (!top.has("eos")) top.fail("eos", "missing ({type: tait|linear, c0, p0})");
+  // Under gravity across a non-periodic axis the fastest speed a column of height H reaches is
+  // about sqrt(2 g H) (free fall), and c0 = 10 sqrt(2 g H) keeps density changes near 1 % (Mach
+  // 0.1; Monaghan 1994): eos.c0 may then be left out, H being the tallest fluid region's extent
+  // along gravity.
+  std::optional<double> c0_default;
+  if (c.free_surface_defaults) {
+    const Vec3d ghat = c.gravity.normalized();
+    double H = 0;
+    bool known = true;
+    for (const FluidSpec& f : c.fluids) {
+      const RegionSpec& r = f.region;
+      switch (r.kind) {
+        case RegionSpec::Kind::box:
+          H = std::max(H, (r.max - r.min).cwiseAbs().dot(ghat.cwiseAbs()));
+          break;
+        case RegionSpec::Kind::disk:
+        case RegionSpec::Kind::ball:
+          H = std::max(H, 2 * r.radius);
+          break;
+        case RegionSpec::Kind::annulus:
+          H = std::max(H, 2 * r.r_out);
+          break;
+        case RegionSpec::Kind::inside_walls:
+          known = false;
+          break;
+      }
+    }
+    if (known && H > 0) c0_default = 10 * std::sqrt(2 * c.gravity.norm() * H);
+  }
+  if (!top.has("eos") && !c0_default)
+    top.fail("eos", "missing ({type: tait|linear, c0, p0}; c0 may be left out only under gravity "
+                    "with fluid regions of known height)");
   eos.allow({"type", "c0", "gamma", "p0"});
   c.eos.type = eos.choice("type", {"tait", "linear"}, "tait") == "tait" ? EosSpec::Type::tait
                                                                         : EosSpec::Type::linear;
-  c.eos.c0 = eos.positive("c0");
+  c.eos.c0 = eos.positive("c0", c0_default);
   c.eos.gamma = eos.positive("gamma", 7.0);
   c.eos.p0 = eos.number("p0", 0.0);
 
   const Keys den = top.sub("density");
-  den.allow({"method", "delta_sph", "diffusion_term", "shifting"});
-  c.density.method = den.choice("method", {"summation", "continuity"}, "summation") == "summation"
+  den.allow({"method", "delta_sph", "diffusion_term", "shifting", "clamp"});
+  // Under gravity across a non-periodic axis (a free surface, a tank) summation density
+  // underestimates the density of every particle whose support the free surface cuts, which
+  // then pulls the surface together; the continuity equation with delta-SPH does not (Antuono
+  // et al. 2010), so it is that case's default.
+  c.density.method = den.choice("method", {"summation", "continuity"},
+                                c.free_surface_defaults ? "continuity" : "summation") ==
+                             "summation"
                          ? DensitySpec::Method::summation
                          : DensitySpec::Method::continuity;
+  if (den.has("clamp")) {
+    const YAML::Node cl = den.raw("clamp");
+    bool on = true;
+    if (cl.IsScalar() && YAML::convert<bool>::decode(cl, on) && !on) {
+      c.density.clamp = false;
+    } else {
+      const Vec3d b = den.vector("clamp", 2);
+      if (!(b[0] > 0 && b[0] < 1 && b[1] > 1 && std::isfinite(b[1])))
+        den.fail(den.key("clamp"),
+                 fmt::format("must be [lo, hi] with 0 < lo < 1 < hi (fractions of rho0), or "
+                             "false (got [{}, {}])",
+                             b[0], b[1]));
+      c.density.clamp_lo = b[0];
+      c.density.clamp_hi = b[1];
+    }
+  }
   c.density.delta_sph = den.non_negative("delta_sph", 0.1);
   c.shifting = den.non_negative("shifting", 0.0);
   if (c.shifting > 1) den.fail(den.key("shifting"), "must be <= 1 (typical: 0.01-0.05)");
@@ -336,7 +395,6 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     c.artificial_alpha = av.non_negative("alpha", 0.0);
   }
 
-  c.gravity = top.vector("gravity", D, Vec3d::Zero());
   if (top.has("forcing")) {
     const Keys frc = top.sub("forcing");
     frc.allow({"drive"});
@@ -378,7 +436,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
 
   const Keys bnd = top.sub("boundary");
   bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure",
-             "ghost_pressure"});
+             "ghost_pressure", "penetration", "wall_tension", "contact"});
   c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
   c.boundary.map =
       bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
@@ -389,7 +447,17 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.boundary.wall_force = bnd.boolean("wall_force", false);
   c.boundary.pressure =
       bnd.choice("pressure", {"symmetric", "consistent", "tensile_control"}, "symmetric");
-  c.boundary.ghost_pressure = bnd.choice("ghost_pressure", {"copy", "hydrostatic"}, "copy");
+  // Under gravity across a non-periodic axis the ghost carries its source's pressure along the
+  // hydrostatic gradient (ghost_boundary.cpp: a copied pressure leaves a tank's first row
+  // short of its wall push by 2 rho g d).
+  c.boundary.ghost_pressure = bnd.choice("ghost_pressure", {"copy", "hydrostatic"},
+                                         c.free_surface_defaults ? "hydrostatic" : "copy");
+  c.boundary.penetration_stop = bnd.choice("penetration", {"project", "stop"}, "project") == "stop";
+  c.boundary.wall_tension = bnd.boolean("wall_tension", !c.free_surface_defaults);
+  c.boundary.contact = bnd.non_negative("contact", 0.1);
+  if (c.boundary.contact >= 0.5)
+    bnd.fail(bnd.key("contact"), "must be below 0.5 (a fraction of dx; the first particle row "
+                                 "sits at dx/2)");
   if (bnd.has("ghost_pressure") && c.boundary.method != "ghost")
     bnd.fail(bnd.key("ghost_pressure"),
              "applies to method: ghost (boundary integrals always extrapolate the wall pressure "
@@ -421,13 +489,16 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
 
   const Keys time = top.sub("time");
   if (!top.has("time")) top.fail("time", "missing ({end, cfl})");
-  time.allow({"end", "cfl", "dt_max", "max_steps"});
+  time.allow({"end", "cfl", "dt_max", "max_steps", "max_removed_fraction"});
   c.t_end = time.non_negative("end");
   c.cfl = time.positive("cfl", 0.2);
   if (c.cfl > 1) time.fail(time.key("cfl"), "must be <= 1");
   c.dt_max = time.non_negative("dt_max", 0.0);
   c.max_steps = time.integer("max_steps", 0);
   if (c.max_steps < 0) time.fail(time.key("max_steps"), "must be >= 0");
+  c.max_removed_fraction = time.non_negative("max_removed_fraction", 0.01);
+  if (c.max_removed_fraction > 1)
+    time.fail(time.key("max_removed_fraction"), "must lie in [0, 1] (a fraction of the particles)");
 
   // MPI domain decomposition (issue 8); ignored on one rank.
   const Keys par = top.sub("parallel");

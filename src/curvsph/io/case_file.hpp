@@ -46,6 +46,11 @@ struct DensitySpec {
   // pass more), molteni (plain density difference), fourtakas (difference less its
   // hydrostatic part).
   enum class Diffusion { antuono, molteni, fourtakas } diffusion = Diffusion::antuono;
+  // density.clamp: [lo, hi] in units of each fluid's rho0: a density outside is set to the
+  // bound and counted (metrics density_clamped); empty (`clamp: false`): a density outside
+  // [0.5, 2] rho0 stops the run with exit 3 (studies that measure when a run fails).
+  double clamp_lo = 0.7, clamp_hi = 1.3;
+  bool clamp = true;
 };
 
 struct BoundarySpec {
@@ -57,6 +62,21 @@ struct BoundarySpec {
   bool wall_force = false;  // repulsion closer than 0.1 dx (Calderon §3.2), both methods
   std::string pressure = "symmetric";   // integrals: symmetric | consistent | tensile_control
   std::string ghost_pressure = "copy";  // ghost: copy | hydrostatic (p_s + rho_s g.(x_g - x_s))
+  // boundary.penetration: what happens to a fluid particle found past a wall (distance <= 0)
+  // at a step. project: it is put back on the fluid side along the wall normal with its
+  // normal velocity relative to the wall removed, and counted (metrics particles_projected);
+  // stop: the run stops with exit 3 (studies that measure when a wall first fails).
+  bool penetration_stop = false;
+  // boundary.contact: the distance from a wall, in dx, at which a particle is stopped (its
+  // normal velocity towards the wall removed; solver/stray_particles.hpp); 0: off.
+  double contact = 0.1;
+  // boundary.wall_tension: whether a wall may pull on the fluid (its pair terms with a
+  // negative pressure sum attract a particle towards the wall). Off, the wall terms take the
+  // pressures clamped at 0 (ghosts: p_g and p_i; integrals: p_b + p_i), so a wall only ever
+  // pushes: a free-surface liquid cannot hold tension at a wall, and a particle in tension
+  // at a contact line is otherwise pulled through it. Default: off under gravity across a
+  // non-periodic axis (free_surface_defaults), on otherwise (confined flows with suction).
+  bool wall_tension = true;
 };
 
 // setup.relax (setup/relax.hpp); map: the ghost map of the walls during relaxation
@@ -118,6 +138,10 @@ struct Case {
   double cfl = 0.2;
   double dt_max = 0;        // 0: no cap
   long max_steps = 0;       // 0: unlimited
+  // time.max_removed_fraction: particles that leave the domain (the domain box, or without one
+  // the box of the initial particles grown by twice its largest extent on every side) are
+  // removed and counted; more than this fraction of the initial count stops the run (exit 3).
+  double max_removed_fraction = 0.01;
   double output_every = 0;  // 0: only first and last
   double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
@@ -134,7 +158,20 @@ struct Case {
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.
   std::string initial_field;
   YAML::Node initial_params;
+  // Gravity with a component along an axis that is not periodic: a free surface or a tank is
+  // likely, and the defaults of continuity density with delta-SPH and of the hydrostatic ghost
+  // pressure apply (README, "Defaults"). Gravity along a periodic axis drives a flow instead.
+  bool free_surface_defaults = false;
   double h() const { return h_over_dx * dx; }
+  // The failure semantics of studies that measure when a wall or a run first fails: no wall
+  // contact, and a particle past a wall and a density outside [0.5, 2] rho0 stop the run
+  // (exit 3) instead of being put back or clamped (boundary.contact: 0, penetration: stop,
+  // density.clamp: false).
+  void make_strays_fatal() {
+    boundary.penetration_stop = true;
+    boundary.contact = 0;
+    density.clamp = false;
+  }
   std::string file_name() const { return file.string(); }
 };
 

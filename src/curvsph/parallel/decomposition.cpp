@@ -295,6 +295,22 @@ void Decomposition<D>::migrate(Particles<D>& P) {
 }
 
 template <int D>
+void Decomposition<D>::forget(std::int64_t count, std::int64_t ids, std::int64_t ids2,
+                              double mass) {
+  if (!o_.check_conservation) return;
+  std::vector<std::int64_t> s{count, ids, ids2};
+  std::vector<double> m{mass};
+  if (active()) {
+    comm_.sum(s);
+    comm_.sum(m);
+  }
+  count0_ -= s[0];
+  id0_ -= s[1];
+  id2_0_ -= s[2];
+  mass0_ -= m[0];
+}
+
+template <int D>
 void Decomposition<D>::check_conservation(const Particles<D>& P) {
   if (!o_.check_conservation) return;
   std::vector<std::int64_t> s{static_cast<std::int64_t>(owned_), 0, 0};

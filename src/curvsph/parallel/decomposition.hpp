@@ -93,6 +93,10 @@ class Decomposition final : public HaloSum {
   // their owners.
   template <class... T>
   void update_halo(std::vector<T>&... f);
+  // Particles this rank removed from the run (solver/stray_particles.hpp: count, sums of ids
+  // and squared ids, mass) leave the conservation check's reference with them. Collective
+  // when check_conservation is on: every rank calls it at the same point of every step.
+  void forget(std::int64_t count, std::int64_t ids, std::int64_t ids2, double mass);
   // Removes the halo copies (start of a step; before integrating owned particles only).
   void drop_halo(Particles<D>& P);
   // Owned particles of every rank on rank 0, sorted by id (output, probes, analyses);

@@ -216,6 +216,17 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     if (c.boundary.method == "integrals")
       m["bi_element_quadrature_points"] = ElementQuadrature<D>::kPoints;
   };
+  // The stray-particle counters (solver/stray_particles.hpp), summed over the ranks.
+  const auto add_stray_metrics = [&](nlohmann::json& m) {
+    const auto& sc = solver.stray_counts();
+    m["particles_initial"] = solver.initial_count();
+    m["particles_removed"] = comm.sum(static_cast<std::int64_t>(sc.removed));
+    m["particles_projected"] = comm.sum(static_cast<std::int64_t>(sc.projected));
+    m["density_clamped"] = comm.sum(static_cast<std::int64_t>(sc.density_clamped));
+    m["wall_contacts"] = comm.sum(static_cast<std::int64_t>(sc.contacts));
+    // [mpi] a particle stopped on two ranks (it migrated between) counts twice.
+    m["wall_contact_particles"] = comm.sum(static_cast<std::int64_t>(solver.contact_particles()));
+  };
   const char* relax_figure =
       c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread";
   if (const auto& rr = solver.relax_result())
@@ -361,6 +372,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       m["unstable"] = 1;  // 0/1 as in metrics.json
       m["unstable_message"] = e.what();
       label_quadrature(m);
+      add_stray_metrics(m);
       with_all([&](const Particles<D>& all) {
         for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
       });
@@ -396,6 +408,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   m["time_reached"] = solver.time();
   m["unstable"] = unstable ? 1 : 0;
   m["stopped"] = stopped ? 1 : 0;  // ended by SIGINT / SIGTERM before time.end
+  add_stray_metrics(m);
   if (const auto& de = solver.initial_density_error()) {
     m["density_error_initial"] = de->max;
     m["density_error_initial_local"] = de->local;

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/ghost/ghost_map.hpp"
@@ -163,27 +165,7 @@ void Solver<D>::resort() {
 
 template <int D>
 void Solver<D>::compute_rates(Real dt_rho) {
-  if (boundary_) {
-    Stopwatch sw{times_.boundary};
-    Stopwatch sw_prepass{times_.boundary_prepass};
-    const double shepard0 = boundary_->shepard_seconds();
-    boundary_->prepare(P_, t_);
-    times_.shepard += boundary_->shepard_seconds() - shepard0;
-    // Owned particles only: a halo copy that went through a wall is its owner's report.
-    std::vector<Index> through;
-    for (const Index i : boundary_->penetrated())
-      if (i < decomp_.owned()) through.push_back(i);
-    std::optional<InstabilityError> err;
-    if (!through.empty()) {
-      const Index i = through.front();
-      err.emplace(
-          fmt::format("step {}, t = {:.6g}: particle {} went through a wall ({} particles did)",
-                      steps_, t_, P_.id[i], through.size()),
-          steps_, static_cast<long>(P_.id[i]), InstabilityError::Kind::penetration,
-          static_cast<long>(through.size()));
-    }
-    mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
-  }
+  if (boundary_) prepare_boundary();
   // [mpi] The fluid pair passes follow the decomposition's pair rule: owned particles only
   // (owner rule), or the pairs whose midpoint this rank owns, halo sums sent to their owners
   // (midpoint rule); halo copies' fields come from their owners (exchange_halo, refresh,
@@ -211,6 +193,10 @@ void Solver<D>::compute_rates(Real dt_rho) {
       density_summation(P_, cells_, W_, rule);
       if (boundary_) boundary_->add_density(P_);
     }
+    if (case_.density.clamp)
+      stray_.density_clamped +=
+          clamp_density(P_, decomp_.owned(), F_.rho0, static_cast<Real>(case_.density.clamp_lo),
+                        static_cast<Real>(case_.density.clamp_hi));
     update_pressure(P_, F_);
     decomp_.refresh(P_);  // [mpi] halo density, sigma, pressure from their owners
   }
@@ -251,6 +237,100 @@ void Solver<D>::compute_rates(Real dt_rho) {
 }
 
 template <int D>
+void Solver<D>::prepare_boundary() {
+  Stopwatch sw{times_.boundary};
+  Stopwatch sw_prepass{times_.boundary_prepass};
+  const double shepard0 = boundary_->shepard_seconds();
+  boundary_->prepare(P_, t_);
+  times_.shepard += boundary_->shepard_seconds() - shepard0;
+  // Owned particles only: a halo copy that went through a wall is its owner's report.
+  std::vector<Index> through;
+  for (const Index i : boundary_->penetrated())
+    if (i < decomp_.owned()) through.push_back(i);
+  const mpi::Comm& comm = decomp_.comm();
+  const bool stop = case_.boundary.penetration_stop && !through.empty();
+  const double contact = case_.boundary.contact * case_.dx;
+  if (!stop && (contact > 0 || !through.empty())) {
+    // The wall contact and the last resort of boundary.penetration: project
+    // (stray_particles.hpp). The pre-pass is redone on the corrected positions (and the cell
+    // list rebuilt: a particle may change cell), a second pre-pass on the steps where it
+    // happens.
+    close_.clear();
+    if (contact > 0) boundary_->within(static_cast<Real>(contact), close_);
+    close_.insert(close_.end(), through.begin(), through.end());
+    std::sort(close_.begin(), close_.end());
+    close_.erase(std::unique(close_.begin(), close_.end()), close_.end());
+    std::erase_if(close_, [&](Index i) { return i >= decomp_.owned(); });
+    const double depth = contact > 0 ? contact : kProjectDepth * case_.dx;
+    for (const Index i : close_) {
+      const WallFix fix = project_out_of_walls(walls_, P_.x[i], P_.v[i], depth);
+      if (fix == WallFix::projected) ++stray_.projected;
+      if (fix == WallFix::contact) {
+        ++stray_.contacts;
+        contacted_.insert(P_.id[i]);
+      }
+      cells_.wrap(P_.x[i]);
+    }
+    // [mpi] every rank redoes its pre-pass when any moved a particle (halo copies of a moved
+    // particle keep their position until the next exchange).
+    if (comm.max(static_cast<std::int64_t>(close_.size())) == 0) return;
+    cells_.build(P_.x);
+    boundary_->prepare(P_, t_);
+    through.clear();
+    for (const Index i : boundary_->penetrated())
+      if (i < decomp_.owned()) through.push_back(i);
+  }
+  std::optional<InstabilityError> err;
+  if (!through.empty()) {
+    const Index i = through.front();
+    err.emplace(
+        fmt::format("step {}, t = {:.6g}: particle {} went through a wall ({} particles did){}",
+                    steps_, t_, P_.id[i], through.size(),
+                    case_.boundary.penetration_stop
+                        ? " (boundary.penetration: stop)"
+                        : "; putting it back on the fluid side failed (a wall thinner than "
+                          "0.25 dx, or walls that leave no fluid side there)"),
+        steps_, static_cast<long>(P_.id[i]), InstabilityError::Kind::penetration,
+        static_cast<long>(through.size()));
+  }
+  mpi::raise_first(comm, err);  // [mpi] every rank stops together
+}
+
+template <int D>
+void Solver<D>::remove_strays() {
+  const Index n = static_cast<Index>(P_.size());
+  keep_.clear();
+  for (Index i = 0; i < n; ++i)
+    if (!removal_box_.outside(P_.x[i]) || !P_.x[i].allFinite())  // NaN: check_state's
+      keep_.push_back(static_cast<std::size_t>(i));
+  const auto removed = static_cast<std::int64_t>(static_cast<std::size_t>(n) - keep_.size());
+  if (removed == 0) decomp_.forget(0, 0, 0, 0);  // [mpi] collective with check_conservation
+  if (removed > 0) {
+    // [mpi] the conservation check's reference loses them too.
+    std::int64_t ids = 0, ids2 = 0;
+    double mass = 0;
+    std::size_t k = 0;
+    for (Index i = 0; i < n; ++i) {
+      if (k < keep_.size() && keep_[k] == static_cast<std::size_t>(i)) {
+        ++k;
+        continue;
+      }
+      ids += P_.id[i];
+      ids2 += P_.id[i] * P_.id[i];
+      mass += static_cast<double>(P_.mass[i]);
+    }
+    decomp_.forget(removed, ids, ids2, mass);
+    P_.permute(keep_);
+    if (tv_.b.size() == static_cast<std::size_t>(n)) {  // b follows its particles
+      tv_acc_.resize(keep_.size());
+      for (std::size_t j = 0; j < keep_.size(); ++j) tv_acc_[j] = tv_.b[keep_[j]];
+      tv_.b.swap(tv_acc_);
+    }
+    stray_.removed += static_cast<long>(removed);
+  }
+}
+
+template <int D>
 void Solver<D>::restart(Particles<D> state, double t) {
   P_ = std::move(state);
   for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
@@ -259,6 +339,11 @@ void Solver<D>::restart(Particles<D> state, double t) {
 
 template <int D>
 void Solver<D>::initialize() {
+  // Every rank holds every particle before distribute(): the count and the removal box are
+  // global.
+  initial_count_ = static_cast<std::int64_t>(P_.size());
+  removal_box_ = removal_box<D>(case_.has_domain, case_.domain_min, case_.domain_max,
+                                case_.periodic, P_.x, walls_, case_.dx);
   decomp_.distribute(P_);  // [mpi] keep this rank's sub-domain
   build_neighbors();
   resort();
@@ -340,6 +425,7 @@ void Solver<D>::step(Real dt_cap) {
       cells_.wrap(P_.x[i]);
     });
   }
+  remove_strays();
   decomp_.migrate(P_);        // [mpi] to the new owners, re-bisecting when unbalanced
   decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
@@ -367,10 +453,11 @@ template <int D>
 void Solver<D>::check_state() const {
   const Index n = decomp_.owned();
   std::optional<InstabilityError> err;
+  const bool range = !case_.density.clamp;  // density.clamp: false keeps the old stop
   for (Index i = 0; i < n; ++i) {
     const Real rho0 = F_.rho0[P_.phase[i]];
     const bool finite = P_.x[i].allFinite() && P_.v[i].allFinite() && std::isfinite(P_.rho[i]);
-    if (!finite || P_.rho[i] < Real(0.5) * rho0 || P_.rho[i] > 2 * rho0) {
+    if (!finite || (range && (P_.rho[i] < Real(0.5) * rho0 || P_.rho[i] > 2 * rho0))) {
       err.emplace(
           fmt::format("step {}, t = {:.6g}: particle {} has {} (rho = {:.6g}, rho0 = {:.6g}, "
                       "|v| = {:.6g})",
@@ -380,7 +467,16 @@ void Solver<D>::check_state() const {
       break;
     }
   }
-  mpi::raise_first(decomp_.comm(), err);  // [mpi] every rank stops together
+  // More than time.max_removed_fraction removed: the domain is too small or the flow is lost.
+  const auto& comm = decomp_.comm();
+  const std::int64_t removed = comm.sum(static_cast<std::int64_t>(stray_.removed));
+  if (!err && removed > 0 &&
+      static_cast<double>(removed) > case_.max_removed_fraction * static_cast<double>(initial_count_))
+    err.emplace(fmt::format("step {}, t = {:.6g}: {} of {} particles left the domain (more than "
+                            "time.max_removed_fraction = {:g}); enlarge domain or check the walls",
+                            steps_, t_, removed, initial_count_, case_.max_removed_fraction),
+                steps_, -1);
+  mpi::raise_first(comm, err);  // [mpi] every rank stops together
 }
 
 template class Solver<2>;

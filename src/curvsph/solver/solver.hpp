@@ -4,6 +4,7 @@
 // run.cpp; this class only advances the state.
 #include <limits>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include "curvsph/boundary/boundary_model.hpp"
@@ -18,6 +19,7 @@
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/physics/transport_velocity.hpp"
 #include "curvsph/setup/relax.hpp"
+#include "curvsph/solver/stray_particles.hpp"
 
 namespace curvsph {
 
@@ -79,14 +81,29 @@ class Solver {
     return initial_density_error_;
   }
 
+  // Stray-particle counters (solver/stray_particles.hpp), this rank's: density clamp events,
+  // particles put back from past a wall, particles removed (left the removal box), wall
+  // contacts (particles stopped at boundary.contact from a wall); and the
+  // particle count after set-up, over all ranks.
+  struct StrayCounts {
+    long density_clamped = 0, projected = 0, removed = 0, contacts = 0;
+  };
+  const StrayCounts& stray_counts() const { return stray_; }
+  std::int64_t initial_count() const { return initial_count_; }
+  // Distinct particles (ids) this rank stopped at the contact distance at least once: a
+  // particle resting on the contact layer is stopped again at every step (contacts counts
+  // those events).
+  std::size_t contact_particles() const { return contacted_.size(); }
+
   // Bytes held by the particle fields, the fluid cell list and the solver's own per-particle
   // scratch (boundary models not included: they do not expose theirs).
   std::size_t bytes_held() const;
 
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
-  // Throws InstabilityError on NaN or density outside [0.5, 2] rho0 (on every rank when
-  // any rank finds such a particle).
+  // Throws InstabilityError on NaN, on density outside [0.5, 2] rho0 when density.clamp is
+  // off, and when more than time.max_removed_fraction of the particles were removed (on every
+  // rank when any rank finds such a particle).
   void check_state() const;
 
  private:
@@ -95,6 +112,12 @@ class Solver {
   // Boundary pre-pass, density (summation; or continuity advanced by dt_rho), pressure and
   // accelerations at the current positions.
   void compute_rates(Real dt_rho);
+  // Boundary pre-pass; particles closer than boundary.contact to a wall or past it are put
+  // back (or the run stops, with boundary.penetration: stop) and the pre-pass is redone on
+  // the corrected positions.
+  void prepare_boundary();
+  // Removes particles outside the removal box (after the drift, before migration).
+  void remove_strays();
 
   Case case_;
   WallSet<D> walls_;
@@ -123,6 +146,12 @@ class Solver {
   PhaseTimes times_;
   std::optional<RelaxResult> relax_;
   std::optional<InitialDensityError> initial_density_error_;
+  StrayCounts stray_;
+  std::int64_t initial_count_ = 0;
+  RemovalBox<D> removal_box_;
+  std::vector<std::size_t> keep_;  // remove_strays() scratch
+  std::vector<Index> close_;       // prepare_boundary() scratch
+  std::unordered_set<std::int64_t> contacted_;
   static constexpr long kResortEvery = 20;
 };
 

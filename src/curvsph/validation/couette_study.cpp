@@ -45,7 +45,8 @@ struct Runner {
     if (from_rest) root.remove("initial");
     overrides.push_back("output.vtk=false");
     apply_overrides(root, overrides);
-    const Case c = read_case(root, case_path);
+    Case c = read_case(root, case_path);
+    c.make_strays_fatal();  // the study reports where a wall first fails
     RunOptions o;
     o.out_dir = ctx.out_dir / "runs" / tag;
     o.threads = ctx.threads;

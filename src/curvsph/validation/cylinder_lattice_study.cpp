@@ -213,10 +213,11 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
         fig9[m] = nlohmann::json::parse(read_text(dir / "metrics.json"));
         continue;
       }
-      const Case c =
+      Case c =
           read_case(path, {"boundary.map=" + maps[m], fmt::format("time.end={}", t_end9),
                            fmt::format("resolution.dx={:.17g}", dx9), "forcing.drive.v0=0.5",
                            fmt::format("output.every={}", t_end9 / 20)});
+      c.make_strays_fatal();  // t_max: the survival time of Vela Vela's Fig. 9
       RunOptions o;
       o.out_dir = dir;
       o.threads = 1;
@@ -237,11 +238,12 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
     }
     LowRun& run = runs[job.low];
     try {
-      const Case c =
+      Case c =
           read_case(path, {"boundary.map=" + run.map, fmt::format("forcing.drive.v0={}", run.v0),
                            fmt::format("setup.random_seed={}", run.seed),
                            fmt::format("resolution.dx={:.17g}", run.dx),
                            fmt::format("time.end={}", t_end10)});
+      c.make_strays_fatal();  // t_max: the survival time of Vela Vela's Fig. 10
       RunOptions o;
       o.threads = 1;
       o.progress = false;

@@ -112,7 +112,9 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     nlohmann::json m = cached_run(o.out_dir, fingerprint, overrides);
     if (m.is_null()) {
       try {
-        m = run_case(read_case(case_path, overrides), o);
+        Case c = read_case(case_path, overrides);
+        c.make_strays_fatal();  // the study reports when a particle first crosses a wall
+        m = run_case(c, o);
       } catch (const InstabilityError& e) {
         std::cerr << tag << ": " << e.what() << "\n";
         std::ifstream in(o.out_dir / "metrics_unstable.json");

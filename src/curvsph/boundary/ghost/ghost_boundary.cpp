@@ -1,5 +1,6 @@
 #include "curvsph/boundary/ghost/ghost_boundary.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "curvsph/boundary/ghost/ghosts.hpp"
@@ -22,6 +23,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     options_.cells = &fluid_cells_;
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
+    no_tension_ = !c.boundary.wall_tension;
     Vec3d lo = c.domain_min, hi = c.domain_max;
     cells_.configure(W_.support, lo, hi, c.periodic);
   }
@@ -109,11 +111,14 @@ class GhostBoundary final : public BoundaryModel<D> {
     if (G_.size() == 0) return;
     const WallForce wf = wall_force_;
     const bool hydrostatic = hydrostatic_;
+    const bool no_tension = no_tension_;
     const Vec<D> grav = F_.gravity;
     parallel_for(static_cast<Index>(P.size()), [&](Index i) {
       const Real si = P.sigma[i];
       const Real inv_si2 = 1 / (si * si);
-      const Real pi_s2 = P.p[i] * inv_si2;
+      // boundary.wall_tension: false: the ghost pair terms take p clamped at 0, so the wall
+      // never pulls (case_file.hpp).
+      const Real pi_s2 = (no_tension ? std::max(P.p[i], Real(0)) : P.p[i]) * inv_si2;
       const Real mu = F_.viscosity[P.phase[i]];
       Vec<D> grad_p = Vec<D>::Zero(), visc = Vec<D>::Zero(), push = Vec<D>::Zero();
       bool any = false;
@@ -125,6 +130,7 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
+        if (no_tension) pg = std::max(pg, Real(0));
         grad_p += bg * (pg * inv_sg2 + pi_s2) * f * r;
         visc += bg * (inv_sg2 + inv_si2) * f * (P.v[i] - G_.v[g]);
         any = true;
@@ -167,6 +173,13 @@ class GhostBoundary final : public BoundaryModel<D> {
   }
 
   const std::vector<Index>& penetrated() const override { return G_.penetrated; }
+  // A particle closer than the support to a wall has its own single ghost of that wall
+  // (source_depth = its distance); one past a wall is in `penetrated`.
+  void within(Real reach, std::vector<Index>& out) const override {
+    out.insert(out.end(), G_.penetrated.begin(), G_.penetrated.end());
+    for (std::size_t g = 0; g < G_.size(); ++g)
+      if (G_.reflections[g] == 1 && G_.source_depth[g] < reach) out.push_back(G_.source[g]);
+  }
 
   void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override {
     x.insert(x.end(), G_.x.begin(), G_.x.end());
@@ -187,6 +200,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   GhostOptions<D> options_;
   WallForce wall_force_;      // range 0 (never active) unless boundary.wall_force
   bool hydrostatic_ = false;  // boundary.ghost_pressure: hydrostatic
+  bool no_tension_ = false;   // boundary.wall_tension: false
   GhostSet<D> G_;
   CellList<D> cells_;
 };

@@ -170,6 +170,7 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   }
   consistent_ = c.boundary.pressure == "consistent";
   tensile_ = c.boundary.pressure == "tensile_control";
+  no_tension_ = !c.boundary.wall_tension;
   dx_ = static_cast<Real>(c.dx);
   if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, dx_);
 }
@@ -418,7 +419,9 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     for (const Pair& q : pairs_of(i)) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
-      fp += (p_wall_[b] + P.p[i]) * wa * en_[b];
+      // boundary.wall_tension: false: the wall only pushes (case_file.hpp).
+      const Real pb = p_wall_[b] + P.p[i];
+      fp += (no_tension_ ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }

@@ -37,6 +37,10 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   void add_shift_sums(const Particles<D>& P, Index n, Real dx,
                       ShiftScratch<D>& sums) const override;
   const std::vector<Index>& penetrated() const override { return penetrated_; }
+  void within(Real reach, std::vector<Index>& out) const override {
+    for (Index i = 0; i < static_cast<Index>(near_.size()); ++i)
+      if (near_[i] && wall_dist_[i] < reach) out.push_back(i);
+  }
   double shepard_seconds() const override { return shepard_seconds_; }
   void append_output(std::vector<Vec<D>>& x, std::vector<int>& kind) const override;
 
@@ -71,6 +75,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   WallForce wall_force_;           // range 0 (never active) unless boundary.wall_force
   bool consistent_ = false;        // boundary.pressure: consistent
   bool tensile_ = false;           // boundary.pressure: tensile_control (consistent where p_i < 0)
+  bool no_tension_ = false;  // boundary.wall_tension: false
   Real dx_ = 0;
   bool built_ = false;
 

@@ -8,6 +8,7 @@
 #include "curvsph/analysis/node_density.hpp"
 #include "curvsph/analysis/poiseuille_analysis.hpp"
 #include "curvsph/analysis/static_droplet.hpp"
+#include "curvsph/analysis/surge_front.hpp"
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/analysis/throttled_pipe.hpp"
 #include "curvsph/core/error.hpp"
@@ -33,6 +34,7 @@ const Entry<2> kEntries2[] = {
     {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
     {"throttled_pipe", &make_throttled_pipe_analysis, &throttled_pipe_initial},
     {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial<2>},
+    {"surge_front", &make_surge_front_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},

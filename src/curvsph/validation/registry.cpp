@@ -17,6 +17,7 @@ StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cos
 StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_study.cpp
 StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wall_study.cpp
 StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
+StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surface_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -40,6 +41,9 @@ const std::vector<Study>& validation_studies() {
       {"hydrostatic_tank",
        "2-D tank at rest, boundary integrals, geometric vs volume Shepard (Calderon §3.1)",
        run_hydrostatic_tank_study},
+      {"free_surface",
+       "Free surfaces against curved walls, every boundary method; 2-D dam break vs Martin & Moyce",
+       &run_free_surface_study},
       {"dam_break_3d", "3-D dam break against a box, SPHERIC test 2 (Calderon §3.2, Figs. 14-17)",
        &run_dam_break_study},
       {"shepard_cost", "Time per step: gamma = 1, volume and geometric Shepard (Calderon Table 1)",

@@ -24,6 +24,8 @@ class TriMeshWall : public Wall<3> {
   double min_radius_of_curvature() const override;
 
   std::size_t triangle_count() const { return tris_.size(); }
+  const std::vector<Vec3d>& vertices() const { return v_; }
+  const std::vector<std::array<int, 3>>& triangles() const { return tris_; }
 
  private:
   std::vector<Vec3d> v_;

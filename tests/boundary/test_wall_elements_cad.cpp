@@ -1,0 +1,97 @@
+// Boundary elements of trimmed CAD faces: a closed cylinder built by OpenCASCADE (a lateral
+// face with a seam and two planar faces trimmed by circles) turned into walls as a STEP file
+// would be, its elements' area against the solid's, and the geometric Shepard factor against
+// adaptive quadrature of W over the solid (tests/support/shepard_reference.hpp) at points
+// approaching its faces, its seam and its circular edges, fluid inside and outside.
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <TopoDS_Shape.hxx>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <numeric>
+#include <string>
+
+#include "../support/shepard_reference.hpp"
+#include "curvsph/boundary/integrals/shepard.hpp"
+#include "curvsph/boundary/integrals/wall_elements.hpp"
+#include "curvsph/cad/cad_import.hpp"
+
+using namespace curvsph;
+
+TEST(TrimmedFaceElements, CylinderSolidFacesSeamAndRims) {
+  constexpr double pi = std::numbers::pi;
+  const double R = 1.0, H = 0.6, h = 0.1, dx = 0.05;
+  const TopoDS_Shape solid = BRepPrimAPI_MakeCylinder(R, H).Shape();
+  double worst = 0;
+  for (auto side : {cad::FluidSide::inside, cad::FluidSide::outside}) {
+    const bool inside = side == cad::FluidSide::inside;
+    WallSet<3> walls;
+    for (auto& w : cad::faces_to_walls(solid, side, 1.0)) walls.add(w);
+    ASSERT_EQ(walls.size(), 3u);
+    const auto el = elements_from_walls<3>(walls, dx, {});
+    // The discs' rims are polygons of chords about dx / 4 long: their area is short of
+    // pi R^2 by (2 pi / n)^2 / 6 of it, about 2e-5 of the whole here.
+    const double area = std::accumulate(el.area.begin(), el.area.end(), 0.0);
+    const double exact = 2 * pi * R * H + 2 * pi * R * R;
+    EXPECT_NEAR(area / exact, 1.0, 5e-5);
+    std::printf("CAD cylinder (%s): %zu elements, area / exact - 1 = %.2e\n",
+                inside ? "inside" : "outside", el.size(), area / exact - 1);
+    for (std::size_t j = 0; j < el.size(); ++j) {
+      const Vec3d c = el.centre[j];
+      // Into the fluid: towards the axis / the middle for the fluid inside.
+      const Vec3d to_middle = Vec3d(0, 0, 0.5 * H) - c;
+      const Vec3d radial(c.x(), c.y(), 0);
+      const Vec3d inward = std::abs(c.z()) < 1e-9 || std::abs(c.z() - H) < 1e-9
+                               ? Vec3d(0, 0, to_middle.z())
+                               : Vec3d(-radial);
+      EXPECT_EQ(el.normal[j].dot(inward) > 0, inside) << c.transpose();
+    }
+    const GeometricShepard<3> fast(el, h);
+    std::vector<std::size_t> all(el.size());
+    std::iota(all.begin(), all.end(), std::size_t{0});
+    const test::Columns fluid = [&](double X, double Y) {
+      std::vector<std::pair<double, double>> out;
+      const bool over = X * X + Y * Y < R * R;
+      if (inside && over) out.push_back({0.0, H});
+      if (!inside && over) out = {{-1e300, 0.0}, {H, 1e300}};
+      if (!inside && !over) out.push_back({-1e300, 1e300});
+      return out;
+    };
+    const double s = inside ? 1.0 : -1.0;
+    auto radial = [](double phi) { return Vec3d(std::cos(phi), std::sin(phi), 0); };
+    struct Probe {
+      const char* what;
+      Vec3d base, dir;
+    };
+    const std::vector<Probe> probes = {
+        {"bottom disc", Vec3d(0.1, 0.05, 0), s * Vec3d(0, 0, 1)},
+        {"top disc near the rim", Vec3d(0.25, -0.9, H), -s * Vec3d(0, 0, 1)},
+        {"lateral face", R * radial(2.0) + Vec3d(0, 0, 0.3), -s * radial(2.0)},
+        {"lateral face at the seam", Vec3d(R, 0, 0.3), -s * radial(0.0)},
+        {"bottom rim", R * radial(0.7), s * (Vec3d(0, 0, 1) - radial(0.7)).normalized()},
+        {"top rim", R * radial(3.0) + Vec3d(0, 0, H),
+         -s * (Vec3d(0, 0, 1) + radial(3.0)).normalized()}};
+    for (const Probe& pr : probes) {
+      double worst_here = 0;
+      // A point of a curved rim between its samples lies outside the elements (by the
+      // chords' sagitta, (dx / 4)^2 / (8 R) = 2e-5 here): the rims are approached to 1e-3 h.
+      const bool rim = std::string(pr.what).find("rim") != std::string::npos;
+      for (double d : {1.5, 1.0, 0.5, 0.2, 0.05, 1e-3, 0.0}) {
+        if (rim && d == 0.0) continue;
+        const Vec3d x = pr.base + d * h * pr.dir;
+        const double ref = test::reference_gamma_3d(x, h, fluid);
+        const double e = std::max(std::abs(shepard_geometric<3>(el, x, h) - ref),
+                                  std::abs(fast(el, all, x) - ref));
+        worst_here = std::max(worst_here, e);
+        EXPECT_LT(e, 0.005) << pr.what << " inside " << inside << " d/h " << d << " ref " << ref;
+      }
+      std::printf("CAD cylinder (%s), %s: max |gamma - ref| = %.2e\n",
+                  inside ? "inside" : "outside", pr.what, worst_here);
+      worst = std::max(worst, worst_here);
+    }
+  }
+  std::printf("CAD cylinder: max |gamma - ref| = %.2e\n", worst);
+}

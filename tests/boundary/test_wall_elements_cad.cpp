@@ -5,11 +5,18 @@
 // approaching its faces, its seam and its circular edges, fluid inside and outside.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <gp_Circ.hxx>
 #include <numbers>
 #include <numeric>
 #include <string>
@@ -94,4 +101,70 @@ TEST(TrimmedFaceElements, CylinderSolidFacesSeamAndRims) {
     }
   }
   std::printf("CAD cylinder: max |gamma - ref| = %.2e\n", worst);
+}
+
+TEST(TrimmedFaceElements, PlateWithAHoleInnerLoops) {
+  // A plate [0, L]^2 x [0, H] with a round hole through it (OpenCASCADE: a face with an inner
+  // wire, extruded): its top and bottom faces are trimmed by an outer square and an inner
+  // circle, so their cells are cut by a hole loop. Fluid inside the plate (the material).
+  constexpr double pi = std::numbers::pi;
+  const double L = 1.2, H = 0.4, r = 0.4, h = 0.1, dx = 0.05;
+  const gp_Pnt c(0.6, 0.6, 0);
+  const TopoDS_Wire outer =
+      BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(L, 0, 0), gp_Pnt(L, L, 0), gp_Pnt(0, L, 0),
+                                 Standard_True)
+          .Wire();
+  const TopoDS_Wire hole =
+      BRepBuilderAPI_MakeWire(
+          BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(c, gp_Dir(0, 0, 1)), r)).Edge())
+          .Wire();
+  BRepBuilderAPI_MakeFace mf(outer);
+  mf.Add(TopoDS::Wire(hole.Reversed()));
+  const TopoDS_Shape plate = BRepPrimAPI_MakePrism(mf.Face(), gp_Vec(0, 0, H)).Shape();
+  WallSet<3> walls;
+  for (auto& w : cad::faces_to_walls(plate, cad::FluidSide::inside, 1.0)) walls.add(w);
+  ASSERT_EQ(walls.size(), 7u);  // 4 sides, bottom, top, the hole
+  const auto el = elements_from_walls<3>(walls, dx, {});
+  const double area = std::accumulate(el.area.begin(), el.area.end(), 0.0);
+  const double exact = 2 * (L * L - pi * r * r) + 4 * L * H + 2 * pi * r * H;
+  EXPECT_NEAR(area / exact, 1.0, 5e-5);
+  std::printf("CAD plate with a hole: %zu elements, area / exact - 1 = %.2e\n", el.size(),
+              area / exact - 1);
+  const GeometricShepard<3> fast(el, h);
+  std::vector<std::size_t> all(el.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  const test::Columns fluid = [&](double X, double Y) {
+    std::vector<std::pair<double, double>> out;
+    const double dxc = X - c.X(), dyc = Y - c.Y();
+    if (X > 0 && X < L && Y > 0 && Y < L && dxc * dxc + dyc * dyc > r * r) out.push_back({0.0, H});
+    return out;
+  };
+  auto radial = [](double phi) { return Vec3d(std::cos(phi), std::sin(phi), 0); };
+  const Vec3d cc(c.X(), c.Y(), 0);
+  struct Probe {
+    const char* what;
+    Vec3d base, dir;
+  };
+  const std::vector<Probe> probes = {
+      {"top face by the hole", cc + (r + 0.03) * radial(0.4) + Vec3d(0, 0, H), Vec3d(0, 0, -1)},
+      {"hole face", cc + r * radial(2.2) + Vec3d(0, 0, 0.5 * H), radial(2.2)},
+      {"top rim of the hole", cc + r * radial(4.0) + Vec3d(0, 0, H),
+       (radial(4.0) - Vec3d(0, 0, 1)).normalized()},
+      {"bottom rim of the hole", cc + r * radial(5.5),
+       (radial(5.5) + Vec3d(0, 0, 1)).normalized()}};
+  double worst = 0;
+  for (const Probe& pr : probes) {
+    double worst_here = 0;
+    for (double d : {1.5, 1.0, 0.5, 0.2, 0.05, 1e-3}) {
+      const Vec3d x = pr.base + d * h * pr.dir;
+      const double ref = test::reference_gamma_3d(x, h, fluid);
+      const double e = std::max(std::abs(shepard_geometric<3>(el, x, h) - ref),
+                                std::abs(fast(el, all, x) - ref));
+      worst_here = std::max(worst_here, e);
+      EXPECT_LT(e, 0.005) << pr.what << " d/h " << d << " ref " << ref;
+    }
+    std::printf("CAD plate with a hole, %s: max |gamma - ref| = %.2e\n", pr.what, worst_here);
+    worst = std::max(worst, worst_here);
+  }
+  std::printf("CAD plate with a hole: max |gamma - ref| = %.2e\n", worst);
 }

@@ -42,9 +42,10 @@
 //                clipped to the cell) and fanned into triangles about the clipped polygon's
 //                centroid, area = int |S_u x S_v| over each (collapsed Gauss-Legendre 8 x 8).
 //                Faces sharing an edge share its samples (edge parameter): they meet vertex
-//                to vertex. A cell crossed by several loops, a hole or a polygon that is not
-//                star-shaped about its centroid is split in four, three times, then kept or
-//                dropped by its centre. A point on a curved rim between two samples lies
+//                to vertex. A cell that a hole's loop crosses, or whose part is not
+//                star-shaped: the loop's chain closed along the cell's side, ear-clipped. A
+//                cell crossed by several loops or twice is split in four, three times, then
+//                kept or dropped by its centre. A point on a curved rim between two samples lies
 //                outside the elements by the chord's sagitta, (dx / 4)^2 / (8 R)
 //  Curved patches: vertices on the surface (planar, by symmetry, on the analytic surfaces:
 //  rectangles or isosceles trapezoids; a NURBS cell's four corners need not be coplanar),

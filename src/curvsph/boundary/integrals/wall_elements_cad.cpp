@@ -2,10 +2,12 @@
 // parameter rectangle cut into cells of about dx, cells clear of the trim loops kept whole
 // (curved quads, as the NURBS surfaces' cells) or dropped, cells that a trim loop touches
 // clipped to the part inside the face (Sutherland & Hodgman 1974, the loop clipped by the
-// cell's four half-planes) and fanned into triangles about the clipped polygon's centroid.
-// Every loop sample in such a cell is a vertex of its triangles: the loops are sampled from
-// the edges' curves on the surface at the edge parameter, which two faces sharing an edge
-// share, so neighbouring faces meet vertex to vertex along their common edge.
+// cell's four half-planes) and fanned into triangles about the clipped polygon's centroid; a
+// hole's loop, or a part not star-shaped about its centroid: the loop's chain through the
+// cell closed along the cell's side, ear-clipped. Every loop sample in such a cell is a vertex of
+// its triangles: the loops are sampled from the edges' curves on the surface at the edge parameter,
+// which two faces sharing an edge share, so neighbouring faces meet vertex to vertex along their
+// common edge.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -43,9 +45,11 @@ bool inside_loops(const std::vector<Loop>& loops, const Uv& q) {
   return in;
 }
 
-// Whether segment a-b meets the closed rectangle [lo, hi] (Liang & Barsky clipping).
-bool segment_meets(const Uv& a, const Uv& b, const Uv& lo, const Uv& hi) {
-  double t0 = 0, t1 = 1;
+// Whether segment a-b meets the closed rectangle [lo, hi] (Liang & Barsky clipping), and
+// the parameters [t0, t1] of its part inside.
+bool segment_meets(const Uv& a, const Uv& b, const Uv& lo, const Uv& hi, double& t0, double& t1) {
+  t0 = 0;
+  t1 = 1;
   for (int d = 0; d < 2; ++d) {
     const double dd = b[d] - a[d];
     for (const auto& [p, q] : {std::pair{-dd, a[d] - lo[d]}, {dd, hi[d] - a[d]}}) {
@@ -158,6 +162,105 @@ bool add_fan(BoundaryElements<3>& out, const Face& f, const Loop& p) {
   return true;
 }
 
+// The cell's part left of a loop that passes through it once, as one polygon: the loop's
+// chain inside the cell from where it enters to where it leaves, closed along the cell's
+// boundary counter-clockwise (Weiler & Atherton's walk for a single crossing). False when the
+// loop enters the cell more than once, or not at all.
+bool chain_polygon(const Loop& p, const Uv& lo, const Uv& hi, Loop& out) {
+  const std::size_t n = p.size();
+  std::size_t entry = n;
+  double t_entry = 0;
+  int entries = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double t0, t1;
+    if (!segment_meets(p[i], p[(i + 1) % n], lo, hi, t0, t1) || !(t1 > t0)) continue;
+    if (t0 > 0) {
+      ++entries;
+      entry = i;
+      t_entry = t0;
+    }
+  }
+  if (entries != 1) return false;
+  auto at = [&](std::size_t i, double t) {
+    const Uv& a = p[i % n];
+    const Uv& b = p[(i + 1) % n];
+    return Uv{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+  };
+  out.clear();
+  out.push_back(at(entry, t_entry));
+  Uv exit{};
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (entry + k) % n;
+    double t0, t1;
+    if (!segment_meets(p[i], p[(i + 1) % n], lo, hi, t0, t1)) return false;
+    if (t1 < 1) {
+      exit = at(i, t1);
+      break;
+    }
+    out.push_back(p[(i + 1) % n]);
+    if (k + 1 == n) return false;  // never left
+  }
+  out.push_back(exit);
+  // Walk the boundary counter-clockwise from the exit to the entry, adding the corners.
+  const double w = hi[0] - lo[0], hgt = hi[1] - lo[1], perimeter = 2 * (w + hgt);
+  auto arc = [&](const Uv& q) {  // perimeter coordinate, 0 at lo, counter-clockwise
+    const double du = q[0] - lo[0], dv = q[1] - lo[1];
+    const double e[4] = {std::abs(dv), std::abs(w - du), std::abs(hgt - dv), std::abs(du)};
+    const int side = static_cast<int>(std::min_element(e, e + 4) - e);
+    if (side == 0) return du;
+    if (side == 1) return w + dv;
+    if (side == 2) return w + hgt + (w - du);
+    return 2 * w + hgt + (hgt - dv);
+  };
+  const double s_exit = arc(exit);
+  double s_entry = arc(out.front());
+  if (s_entry <= s_exit) s_entry += perimeter;
+  const std::array<Uv, 4> corner = {lo, Uv{hi[0], lo[1]}, hi, Uv{lo[0], hi[1]}};
+  const std::array<double, 4> s_corner = {0, w, w + hgt, 2 * w + hgt};
+  for (int lap = 0; lap < 2; ++lap)
+    for (int c = 0; c < 4; ++c) {
+      const double sc = s_corner[static_cast<std::size_t>(c)] + lap * perimeter;
+      if (sc > s_exit && sc < s_entry) out.push_back(corner[static_cast<std::size_t>(c)]);
+    }
+  return signed_area(out) > 0;
+}
+
+// A simple counter-clockwise polygon as triangles by ear clipping (Meisters 1975); false
+// (nothing added) where no ear is found.
+bool add_ear_clipped(BoundaryElements<3>& out, const Face& f, Loop poly) {
+  auto cross = [](const Uv& a, const Uv& b, const Uv& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  };
+  const double tiny = 1e-14 * std::abs(signed_area(poly));
+  std::vector<std::array<Uv, 3>> tris;
+  while (poly.size() > 3) {
+    const std::size_t n = poly.size();
+    bool clipped = false;
+    for (std::size_t i = 0; i < n && !clipped; ++i) {
+      const Uv& a = poly[(i + n - 1) % n];
+      const Uv& b = poly[i];
+      const Uv& c = poly[(i + 1) % n];
+      const double turn = cross(a, b, c);
+      if (turn <= tiny) continue;  // reflex, or flat (no area: not an ear)
+      bool empty = true;
+      for (std::size_t k = 0; k < n && empty; ++k) {
+        if (k == i || k == (i + 1) % n || k == (i + n - 1) % n) continue;
+        const Uv& q = poly[k];
+        empty = !(cross(a, b, q) >= 0 && cross(b, c, q) >= 0 && cross(c, a, q) >= 0);
+      }
+      if (!empty) continue;
+      tris.push_back({a, b, c});
+      poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (poly.size() == 3 && cross(poly[0], poly[1], poly[2]) > tiny)
+    tris.push_back({poly[0], poly[1], poly[2]});
+  for (const auto& t : tris) add_uv_triangle(out, f, t[0], t[1], t[2]);
+  return true;
+}
+
 // The whole cell as a curved quad (as a NURBS surface's cells), area by Gauss-Legendre 8 x 8.
 void add_whole_cell(BoundaryElements<3>& out, const Face& f, const Uv& lo, const Uv& hi) {
   auto S = [&](double u, double v) { return f.point({u, v}); };
@@ -176,7 +279,7 @@ void add_cell(BoundaryElements<3>& out, const Face& f, const std::vector<Loop>& 
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const Loop& p = loops[l];
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (segment_meets(p[i], p[(i + 1) % p.size()], lo, hi)) {
+      if (double t0, t1; segment_meets(p[i], p[(i + 1) % p.size()], lo, hi, t0, t1)) {
         touching = static_cast<int>(l);
         ++count;
         break;
@@ -195,8 +298,14 @@ void add_cell(BoundaryElements<3>& out, const Face& f, const std::vector<Loop>& 
     const bool outer = signed_area(loops[static_cast<std::size_t>(touching)]) > 0;
     if (outer && p.size() >= 3 && add_fan(out, f, p)) return;
     if (outer && p.size() < 3) return;
+    // A hole, or a part not star-shaped about its centroid: the chain and the cell's
+    // boundary, ear-clipped.
+    Loop chain;
+    if (chain_polygon(loops[static_cast<std::size_t>(touching)], lo, hi, chain) &&
+        add_ear_clipped(out, f, chain))
+      return;
   }
-  // Several loops, a hole, or a polygon not star-shaped: the cell in four, down to 1/8.
+  // Several loops or crossings: the cell in four, down to 1/8.
   if (depth < 3) {
     for (int i = 0; i < 2; ++i)
       for (int k = 0; k < 2; ++k)

@@ -31,8 +31,8 @@
 //                length of iso-curves, about dx), every crease knot (interior multiplicity >=
 //                degree) a grid line; area = int |S_u x S_v| over the cell (Gauss-Legendre
 //                8 x 8 between knots); fluid on the front or back as the wall says
-//       trimesh  (STL) the triangles, each split into k^2 similar ones (k = its longest edge
-//                / dx, rounded, >= 1), oriented by the wall's own normal (into the fluid).
+//       trimesh  (STL) the triangles, each split into k^2 similar ones (pieces of about
+//                dx^2 / 2 and no longer than about 2 dx), oriented by the wall's own normal.
 //                Neighbours with another k meet at T-junctions on their common straight edge:
 //                the elements cover the mesh exactly (area = the mesh's), which is what the
 //                solid angles need; exact flat elements (gap 0)

@@ -216,17 +216,21 @@ bool trimesh_3d(const Wall<3>& w, double dx, const Bounds<3>&, BoundaryElements<
                           v[static_cast<std::size_t>(T[2])]) /
                          3.0;
   const bool flip = mesh->closest(centroid).normal.dot(cross_of(T)) < 0;
-  // Each triangle as k^2 similar triangles (edges split in k, k from its longest edge / dx).
-  // Neighbours with other k meet at T-junctions along their common straight edge: the
-  // elements still cover the mesh exactly (no gap, no overlap), which is what the solid
-  // angles and the Shepard factor need.
+  // Each triangle as k^2 similar triangles (edges split in k), k from its area (pieces of
+  // about dx^2 / 2, half a dx square: a right isosceles triangle gets legs of dx) or from its
+  // longest edge (pieces no longer than about 2 dx), whichever is finer. Neighbours with
+  // another k meet at T-junctions along their common straight edge: the elements still cover
+  // the mesh exactly (no gap, no overlap), which is what the solid angles and the Shepard
+  // factor need.
   for (const auto& t : tris) {
     Vec3d p0 = v[static_cast<std::size_t>(t[0])], p1 = v[static_cast<std::size_t>(t[1])],
           p2 = v[static_cast<std::size_t>(t[2])];
     if (flip) std::swap(p1, p2);
     if (!((p1 - p0).cross(p2 - p0).norm() > 0)) continue;  // degenerate triangle: no area
     const double longest = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm()});
-    const int k = std::max(1, static_cast<int>(std::lround(longest / dx)));
+    const double twice_area = (p1 - p0).cross(p2 - p0).norm();
+    const int k = std::max(
+        1, static_cast<int>(std::lround(std::max(std::sqrt(twice_area), 0.5 * longest) / dx)));
     auto at = [&](int i, int j) {  // lattice point i steps along p0->p1, j along p0->p2
       return Vec3d(p0 + (p1 - p0) * (double(i) / k) + (p2 - p0) * (double(j) / k));
     };

@@ -64,20 +64,6 @@ double mesh_area(const std::vector<Vec3d>& v, const Tris& t) {
   return a;
 }
 
-// gamma of the ball |y - c| <= R (inside) or its complement at distance r from c: the
-// fraction of each kernel shell |y - x| = s inside the ball is (1 - c0) / 2 with c0 =
-// (r^2 + s^2 - R^2) / (2 r s) clamped to [-1, 1]; Gauss-Legendre in s split at |R - r|.
-double ball_gamma(double r, double R, double h, bool inside) {
-  const WendlandC2<3> W(h);
-  auto f = [&](double s) {
-    const double c0 = std::clamp((r * r + s * s - R * R) / (2 * r * s), -1.0, 1.0);
-    const double frac = inside ? 0.5 * (1 - c0) : 0.5 * (1 + c0);
-    return W.value(s) * 4 * pi * s * s * frac;
-  };
-  const double k = std::clamp(std::abs(R - r), 0.0, 2 * h);
-  return (k > 0 ? gauss_legendre_8(f, 0.0, k, 16) : 0.0) + gauss_legendre_8(f, k, 2 * h, 16);
-}
-
 double fast_gamma(const BoundaryElements<3>& el, const GeometricShepard<3>& g, const Vec3d& x) {
   std::vector<std::size_t> all(el.size());
   std::iota(all.begin(), all.end(), std::size_t{0});
@@ -112,7 +98,7 @@ TEST(TriMeshElements, TessellatedSphereAgainstTheBall) {
       const Vec3d dir = Vec3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
       for (double d : {2.0, 1.5, 1.0, 0.5, 0.2, 0.1}) {
         const double r = inside ? R - d * h : R + d * h;
-        const double ref = ball_gamma(r, R, h, inside);
+        const double ref = test::reference_gamma_ball(r, R, h, inside);
         const Vec3d x = c + r * dir;
         const double e = std::max(std::abs(shepard_geometric<3>(el, x, h) - ref),
                                   std::abs(fast_gamma(el, fast, x) - ref));
@@ -121,7 +107,7 @@ TEST(TriMeshElements, TessellatedSphereAgainstTheBall) {
       }
     }
     // On the mesh's vertices (on the sphere): the ball's on-wall value.
-    const double on = ball_gamma(R, R, h, inside);
+    const double on = test::reference_gamma_ball(R, R, h, inside);
     for (std::size_t i = 0; i < v.size(); i += v.size() / 9) {
       const double e = std::max(std::abs(shepard_geometric<3>(el, v[i], h) - on),
                                 std::abs(fast_gamma(el, fast, v[i]) - on));

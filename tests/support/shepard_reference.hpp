@@ -148,4 +148,18 @@ inline double reference_gamma_3d(const Vec3d& x, double h, const Columns& fluid,
   return integrate(ray, 0.0, 2 * std::numbers::pi, 16, tol, 14);
 }
 
+// gamma of the ball |y - c| <= R (inside) or its complement at distance r from c: the
+// fraction of each kernel shell |y - x| = s inside the ball is (1 - c0) / 2 with c0 =
+// (r^2 + s^2 - R^2) / (2 r s) clamped to [-1, 1]; Gauss-Legendre in s split at |R - r|.
+inline double reference_gamma_ball(double r, double R, double h, bool inside) {
+  const WendlandC2<3> W(h);
+  auto f = [&](double s) {
+    const double c0 = std::clamp((r * r + s * s - R * R) / (2 * r * s), -1.0, 1.0);
+    const double frac = inside ? 0.5 * (1 - c0) : 0.5 * (1 + c0);
+    return W.value(s) * 4 * std::numbers::pi * s * s * frac;
+  };
+  const double k = std::clamp(std::abs(R - r), 0.0, 2 * h);
+  return (k > 0 ? gauss_legendre_8(f, 0.0, k, 16) : 0.0) + gauss_legendre_8(f, k, 2 * h, 16);
+}
+
 }  // namespace curvsph::test

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "curvsph/boundary/integrals/wall_elements_freeform.hpp"
@@ -293,21 +295,26 @@ void add_whole_cell(BoundaryElements<3>& out, const Face& f, const Uv& lo, const
   if (area > 0) add_surface_cell(out, S, N, lo[0], hi[0], lo[1], hi[1], area);
 }
 
-void add_cell(BoundaryElements<3>& out, const Face& f, const std::vector<Loop>& loops, const Uv& lo,
-              const Uv& hi, int depth) {
+// Loop segments (loop, index of its first point) that may touch a cell.
+using Segments = std::vector<std::array<std::uint32_t, 2>>;
+
+// `segs`: the segments that may touch the cell (binned by trimmed_face_3d); `inside`: whether
+// the cell's centre is in the face, when known (-1: not known).
+void add_cell(BoundaryElements<3>& out, const Face& f, const std::vector<Loop>& loops,
+              const Segments& segs, const Uv& lo, const Uv& hi, int depth, int inside) {
   int touching = -1, count = 0;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
+  for (const auto& [l, i] : segs) {
+    if (static_cast<int>(l) == touching) continue;
     const Loop& p = loops[l];
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (double t0, t1; segment_meets(p[i], p[(i + 1) % p.size()], lo, hi, t0, t1)) {
-        touching = static_cast<int>(l);
-        ++count;
-        break;
-      }
+    if (double t0, t1; segment_meets(p[i], p[(i + 1) % p.size()], lo, hi, t0, t1)) {
+      if (touching >= 0) ++count;  // a second loop
+      touching = static_cast<int>(l);
+      count = std::max(count, 1);
+    }
   }
   const Uv mid{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
   if (count == 0) {
-    if (inside_loops(loops, mid)) add_whole_cell(out, f, lo, hi);
+    if (inside < 0 ? inside_loops(loops, mid) : inside == 1) add_whole_cell(out, f, lo, hi);
     return;
   }
   // One loop through the cell, the face on its left (outer loops run counter-clockwise,
@@ -329,8 +336,8 @@ void add_cell(BoundaryElements<3>& out, const Face& f, const std::vector<Loop>& 
   if (depth < 3) {
     for (int i = 0; i < 2; ++i)
       for (int k = 0; k < 2; ++k)
-        add_cell(out, f, loops, {i ? mid[0] : lo[0], k ? mid[1] : lo[1]},
-                 {i ? hi[0] : mid[0], k ? hi[1] : mid[1]}, depth + 1);
+        add_cell(out, f, loops, segs, {i ? mid[0] : lo[0], k ? mid[1] : lo[1]},
+                 {i ? hi[0] : mid[0], k ? hi[1] : mid[1]}, depth + 1, -1);
     return;
   }
   // Left after that: kept whole or dropped by its centre (an error of at most dx / 8 along
@@ -383,10 +390,50 @@ bool trimmed_face_3d(const Wall<3>& w, double dx, const Bounds<3>&, BoundaryElem
     return std::max(1, static_cast<int>(std::lround(longest / dx)));
   };
   const int nu = count(true), nv = count(false);
-  for (int i = 0; i < nu; ++i)
-    for (int k = 0; k < nv; ++k)
-      add_cell(out, f, loops, {b[0] + (b[1] - b[0]) * i / nu, b[2] + (b[3] - b[2]) * k / nv},
-               {b[0] + (b[1] - b[0]) * (i + 1) / nu, b[2] + (b[3] - b[2]) * (k + 1) / nv}, 0);
+  const double du = (b[1] - b[0]) / nu, dv = (b[3] - b[2]) / nv;
+  // The loops' segments binned by the cells their bounding boxes overlap (a margin of 1e-9
+  // of a cell for segments on a cell's side), and for every row of cells the crossings of
+  // its middle line with the loops (the even-odd state of each untouched cell): without
+  // them every cell scanned every loop point, cells x samples, 30 s for a 3.5 m CAD pipe at
+  // dx = 2.5 mm.
+  std::vector<Segments> bins(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv));
+  auto cell_range = [](double a, double c, double lo, double step, int n) {
+    const int i0 = static_cast<int>(std::floor((std::min(a, c) - lo) / step - 1e-9));
+    const int i1 = static_cast<int>(std::floor((std::max(a, c) - lo) / step + 1e-9));
+    return std::pair{std::clamp(i0, 0, n - 1), std::clamp(i1, 0, n - 1)};
+  };
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t i = 0; i < loops[l].size(); ++i) {
+      const Uv& a = loops[l][i];
+      const Uv& c = loops[l][(i + 1) % loops[l].size()];
+      const auto [i0, i1] = cell_range(a[0], c[0], b[0], du, nu);
+      const auto [k0, k1] = cell_range(a[1], c[1], b[2], dv, nv);
+      for (int iu = i0; iu <= i1; ++iu)
+        for (int kv = k0; kv <= k1; ++kv)
+          bins[static_cast<std::size_t>(iu) * static_cast<std::size_t>(nv) +
+               static_cast<std::size_t>(kv)]
+              .push_back({static_cast<std::uint32_t>(l), static_cast<std::uint32_t>(i)});
+    }
+  std::vector<double> crossings;
+  for (int k = 0; k < nv; ++k) {
+    const double v = b[2] + (b[3] - b[2]) * (k + 0.5) / nv;
+    crossings.clear();
+    for (const Loop& p : loops)
+      for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+        if ((p[i][1] > v) != (p[j][1] > v))
+          crossings.push_back(p[j][0] + (p[i][0] - p[j][0]) * (v - p[j][1]) / (p[i][1] - p[j][1]));
+    std::sort(crossings.begin(), crossings.end());
+    for (int i = 0; i < nu; ++i) {
+      const double u = b[0] + (b[1] - b[0]) * (i + 0.5) / nu;
+      const auto left = std::lower_bound(crossings.begin(), crossings.end(), u) - crossings.begin();
+      add_cell(out, f, loops,
+               bins[static_cast<std::size_t>(i) * static_cast<std::size_t>(nv) +
+                    static_cast<std::size_t>(k)],
+               {b[0] + (b[1] - b[0]) * i / nu, b[2] + (b[3] - b[2]) * k / nv},
+               {b[0] + (b[1] - b[0]) * (i + 1) / nu, b[2] + (b[3] - b[2]) * (k + 1) / nv}, 0,
+               static_cast<int>(left % 2));
+    }
+  }
   return true;
 }
 

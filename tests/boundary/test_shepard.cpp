@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 
+#include "../support/shepard_reference.hpp"
 #include "curvsph/boundary/integrals/boundary_elements.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
 #include "curvsph/core/quadrature.hpp"
@@ -18,59 +19,10 @@ constexpr double pi = std::numbers::pi;
 constexpr double h = 1.0;
 constexpr double dx = 0.5;  // h/dx = 2
 
-// ---- Independent reference: gamma(x) = int over the fluid part of the support disc of W,
-// in polar coordinates about x. The fluid part of each ray is found from an inside(y)
-// predicate (sampling + bisection), the radial integral by 8-point Gauss-Legendre per
-// interval (exact: W r is a polynomial of degree 6), the angle by adaptive Simpson.
-double radial_mass(double r1, double r2) {
-  const WendlandC2<2> W(h);
-  return gauss_legendre_8([&](double r) { return W.value(r) * r; }, r1, r2);
-}
-
-double ray_integral(const Vec2d& x, double phi, const std::function<bool(const Vec2d&)>& inside) {
-  const Vec2d e(std::cos(phi), std::sin(phi));
-  const int n = 400;
-  const double R = 2 * h;
-  double sum = 0, start = 0;
-  bool in = inside(x + 1e-13 * e);
-  for (int k = 1; k <= n; ++k) {
-    const double r = R * k / n;
-    const bool now = inside(x + r * e);
-    if (now != in) {
-      double lo = R * (k - 1) / n, hi = r;
-      for (int it = 0; it < 60; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (inside(x + mid * e) == in ? lo : hi) = mid;
-      }
-      if (in) sum += radial_mass(start, lo);
-      start = lo;
-      in = now;
-    }
-  }
-  if (in) sum += radial_mass(start, R);
-  return sum;
-}
-
-double simpson(const std::function<double(double)>& f, double a, double b, double fa, double fm,
-               double fb, double whole, double tol, int depth) {
-  const double m = 0.5 * (a + b), lm = 0.5 * (a + m), rm = 0.5 * (m + b);
-  const double flm = f(lm), frm = f(rm);
-  const double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
-  if (depth <= 0 || std::abs(left + right - whole) <= 15 * tol)
-    return left + right + (left + right - whole) / 15;
-  return simpson(f, a, m, fa, flm, fm, left, tol / 2, depth - 1) +
-         simpson(f, m, b, fm, frm, fb, right, tol / 2, depth - 1);
-}
-
+// ---- Independent reference: gamma(x) = int over the fluid part of the support disc of W
+// (tests/support/shepard_reference.hpp: polar coordinates about x, adaptive in the angle).
 double reference_gamma(const Vec2d& x, const std::function<bool(const Vec2d&)>& inside) {
-  auto f = [&](double phi) { return ray_integral(x, phi, inside); };
-  double total = 0;
-  for (int s = 0; s < 16; ++s) {  // 16 sectors, adaptive inside each
-    const double a = 2 * pi * s / 16, b = 2 * pi * (s + 1) / 16;
-    const double fa = f(a), fb = f(b), fm = f(0.5 * (a + b));
-    total += simpson(f, a, b, fa, fm, fb, (b - a) / 6 * (fa + 4 * fm + fb), 1e-9, 20);
-  }
-  return total;
+  return test::reference_gamma_2d(x, h, inside);
 }
 
 // ---- Geometries (fluid region predicates and elements at spacing dx).

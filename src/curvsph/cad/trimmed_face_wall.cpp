@@ -2,7 +2,9 @@
 
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
@@ -12,6 +14,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
 #include <cmath>
 #include <limits>
 
@@ -81,6 +84,56 @@ WallPoint<3> TrimmedFaceWall::closest(const Vec3d& x, const ParamSeed& seed) con
   r.distance = std::copysign(d.norm(), d.dot(r.normal));
   r.iterations = w.iterations + on.iterations;
   return r;
+}
+
+std::array<double, 4> TrimmedFaceWall::uv_bounds() const {
+  std::array<double, 4> b{};
+  BRepTools::UVBounds(occ_->face, b[0], b[1], b[2], b[3]);
+  return b;
+}
+
+void TrimmedFaceWall::eval(double u, double v, Vec3d& p, Vec3d& su, Vec3d& sv) const {
+  gp_Pnt P;
+  gp_Vec Du, Dv;
+  BRep_Tool::Surface(occ_->face)->D1(u, v, P, Du, Dv);
+  p = scale_ * Vec3d(P.X(), P.Y(), P.Z());
+  su = scale_ * Vec3d(Du.X(), Du.Y(), Du.Z());
+  sv = scale_ * Vec3d(Dv.X(), Dv.Y(), Dv.Z());
+}
+
+std::vector<std::vector<std::array<double, 2>>> TrimmedFaceWall::trim_loops(double spacing) const {
+  std::vector<std::vector<std::array<double, 2>>> loops;
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(occ_->face);
+  for (TopExp_Explorer wx(occ_->face, TopAbs_WIRE); wx.More(); wx.Next()) {
+    std::vector<std::array<double, 2>> loop;
+    // The wire explorer gives the edges in connection order, each with its orientation in
+    // the wire; a seam edge comes twice, and CurveOnSurface picks the curve of each side.
+    for (BRepTools_WireExplorer ex(TopoDS::Wire(wx.Current()), occ_->face); ex.More(); ex.Next()) {
+      const TopoDS_Edge& e = ex.Current();
+      double f, l;
+      const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(e, occ_->face, f, l);
+      if (c.IsNull()) continue;
+      const bool reversed = e.Orientation() == TopAbs_REVERSED;
+      // 3-D length from a fine polyline of the curve on the surface, then the sample count.
+      constexpr int fine = 64;
+      double length = 0;
+      gp_Pnt prev = surface->Value(c->Value(f).X(), c->Value(f).Y());
+      for (int i = 1; i <= fine; ++i) {
+        const gp_Pnt2d uv = c->Value(f + (l - f) * i / fine);
+        const gp_Pnt q = surface->Value(uv.X(), uv.Y());
+        length += prev.Distance(q);
+        prev = q;
+      }
+      const int n = std::max(2, static_cast<int>(std::ceil(scale_ * length / spacing)));
+      for (int i = 0; i < n; ++i) {  // the end point is the next edge's start
+        const double t = reversed ? l - (l - f) * i / n : f + (l - f) * i / n;
+        const gp_Pnt2d uv = c->Value(t);
+        loop.push_back({uv.X(), uv.Y()});
+      }
+    }
+    if (loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  return loops;
 }
 
 }  // namespace curvsph::cad

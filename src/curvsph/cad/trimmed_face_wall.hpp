@@ -7,6 +7,7 @@
 // boundary is not searched for; for the cylinders, tori, planes and gently curved patches of
 // CAD walls the distance grows monotonically away from the untrimmed foot, so this holds.)
 #include <TopoDS_Face.hxx>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,15 @@ class TrimmedFaceWall : public Wall<3> {
   std::string describe() const override { return label_ + ": " + surf_->describe(); }
   double min_radius_of_curvature() const override { return surf_->min_radius_of_curvature(); }
   const NurbsSurfaceWall& surface_wall() const { return *surf_; }
+
+  // The face in its own parametrisation (OpenCASCADE's surface of the face, lengths times the
+  // scale), for boundary elements: the (u, v) bounds of the face {u0, u1, v0, v1}, the point
+  // and first derivatives, and the trim loops (every wire, edges in wire order, each edge's
+  // curve on the surface sampled so that consecutive points are at most `spacing` apart in
+  // 3-D) as closed polygons in (u, v), the last point not repeated.
+  std::array<double, 4> uv_bounds() const;
+  void eval(double u, double v, Vec3d& p, Vec3d& su, Vec3d& sv) const;
+  std::vector<std::vector<std::array<double, 2>>> trim_loops(double spacing) const;
 
  private:
   struct Occ;  // OpenCASCADE handles, kept out of this header

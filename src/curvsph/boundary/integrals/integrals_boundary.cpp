@@ -148,6 +148,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "curvsph/boundary/integrals/periodic_clip.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
@@ -197,6 +198,9 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
     } catch (const std::invalid_argument& err) {
       throw InputError(c.file_name(), "walls." + std::to_string(k), err.what());
     }
+    // A wall drawn past a periodic seam would be counted twice (itself and its image).
+    if (c.has_domain && (c.periodic[0] || c.periodic[1] || c.periodic[2]))
+      e = clip_to_periodic_domain<D>(e, c.domain_min.head<D>(), c.domain_max.head<D>(), c.periodic);
     wall_of.insert(wall_of.end(), e.size(), static_cast<int>(k));
     el_.append(e);
   }

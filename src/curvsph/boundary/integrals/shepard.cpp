@@ -146,7 +146,10 @@ double signed_offset(const BoundaryElements<3>& el, std::size_t j, const Vec3d& 
     pn += (v[static_cast<std::size_t>(k)] - v[0]).cross(v[static_cast<std::size_t>(k + 1)] - v[0]);
   pn.normalize();
   const double s = pn.dot(x - v[0]);
-  onto = point_in_polygon(el, j, x - s * pn, 0.0);
+  // Within the gap beyond an edge too: the wall between two vertices of a curved edge (a
+  // CAD face's seam) bulges past the edge's chord, over no element.
+  const double g = j < el.gap.size() ? el.gap[j] : 0.0;
+  onto = point_in_polygon(el, j, x - s * pn, g);
   return s;
 }
 

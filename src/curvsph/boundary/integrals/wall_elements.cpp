@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "curvsph/boundary/integrals/wall_elements_freeform.hpp"
 #include "curvsph/core/quadrature.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
@@ -23,25 +24,11 @@
 
 namespace curvsph {
 
-namespace {
-
-constexpr double pi = std::numbers::pi;
-
-int count_for(double length, double dx, int minimum) {
-  return std::max(minimum, static_cast<int>(std::lround(length / dx)));
-}
-
-void require_bounds(const auto& bounds, const std::string& what) {
-  if (bounds.isEmpty())
-    throw std::invalid_argument("boundary elements of an infinite wall (" + what +
-                                ") need domain bounds");
-}
+namespace wall_elements_detail {
 
 // ---- Curved patches (3-D) ------------------------------------------------------------------
 
-// Adds the patch of the parameter cell [u0, u1] x [v0, v1] of surface(u, v) with the given
-// unit normal function (into the fluid) and exact area. Vertices on the surface; duplicates
-// (a pole) are dropped; the order is chosen so that the polygon faces the fluid.
+// wall_elements_freeform.hpp describes it.
 void add_surface_cell(BoundaryElements<3>& out, const std::function<Vec3d(double, double)>& S,
                       const std::function<Vec3d(double, double)>& normal, double u0, double u1,
                       double v0, double v1, double area) {
@@ -63,12 +50,33 @@ void add_surface_cell(BoundaryElements<3>& out, const std::function<Vec3d(double
     pn += (v[static_cast<std::size_t>(k)] - v[0]).cross(v[static_cast<std::size_t>(k + 1)] - v[0]);
   if (pn.dot(n) < 0) std::reverse(v.begin(), v.begin() + count);
   pn = pn.normalized();
-  // Largest distance of the surface from the polygon's plane (centre and edge midpoints).
+  // Largest distance of the surface from the polygon's plane (centre and edge midpoints), and
+  // of the vertices (a quad of a doubly curved surface need not be planar).
   double g = std::abs(pn.dot(c - v[0]));
+  for (int k = 1; k < count; ++k)
+    g = std::max(g, std::abs(pn.dot(v[static_cast<std::size_t>(k)] - v[0])));
   for (const auto& [a, b] : {std::pair{um, v0}, {um, v1}, {u0, vm}, {u1, vm}})
     g = std::max(g, std::abs(pn.dot(S(a, b) - v[0])));
   out.add_curved_patch(v.data(), count, c, n, area, 1.5 * g);
 }
+
+}  // namespace wall_elements_detail
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+int count_for(double length, double dx, int minimum) {
+  return std::max(minimum, static_cast<int>(std::lround(length / dx)));
+}
+
+void require_bounds(const auto& bounds, const std::string& what) {
+  if (bounds.isEmpty())
+    throw std::invalid_argument("boundary elements of an infinite wall (" + what +
+                                ") need domain bounds");
+}
+
+using wall_elements_detail::add_surface_cell;
 
 // ---- 2-D walls -------------------------------------------------------------------------------
 
@@ -319,16 +327,23 @@ const std::vector<Discretizer<D>>& discretizers();
 
 template <>
 const std::vector<Discretizer<2>>& discretizers<2>() {
-  // A new 2-D wall type (NURBS curve): one function like those above, one line here.
-  static const std::vector<Discretizer<2>> table = {plane_2d, box_2d, circle_2d, ellipse_2d};
+  // A new 2-D wall type: one function like those above, one line here.
+  static const std::vector<Discretizer<2>> table = {plane_2d, box_2d, circle_2d, ellipse_2d,
+                                                    wall_elements_detail::nurbs_curve_2d};
   return table;
 }
 
 template <>
 const std::vector<Discretizer<3>>& discretizers<3>() {
-  // A new 3-D wall type (NURBS surface): one function like those above, one line here.
-  static const std::vector<Discretizer<3>> table = {plane_3d, box_3d, cylinder_3d, sphere_3d,
-                                                    torus_3d};
+  // A new 3-D wall type: one function like those above, one line here.
+  static const std::vector<Discretizer<3>> table = {plane_3d,
+                                                    box_3d,
+                                                    cylinder_3d,
+                                                    sphere_3d,
+                                                    torus_3d,
+                                                    wall_elements_detail::nurbs_surface_3d,
+                                                    wall_elements_detail::trimmed_face_3d,
+                                                    wall_elements_detail::trimesh_3d};
   return table;
 }
 

@@ -48,6 +48,7 @@ struct Runner {
     const Case c = read_case(root, case_path);
     RunOptions o;
     o.out_dir = ctx.out_dir / "runs" / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     o.progress = true;
     try {

@@ -222,6 +222,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
                            fmt::format("output.every={}", t_end9 / 20)});
       RunOptions o;
       o.out_dir = dir;
+      o.overwrite = true;  // a study redoes its runs in its own folders
       o.threads = 1;
       o.progress = false;
       try {

@@ -8,6 +8,6 @@ cd "$(dirname "$0")/.."
 for np in 1 2; do for st in 5 15; do
   out=${OUT:-/tmp/scaling_cpu_time}/np${np}_st${st}; mkdir -p $out
   /usr/bin/time -f "%U %S %e" -o $out/time.txt mpirun --oversubscribe $( [ "$(id -u)" = 0 ] && echo --allow-run-as-root) -np $np -x OMP_NUM_THREADS=1 -x OMP_WAIT_POLICY=passive --mca mpi_yield_when_idle 1 \
-    $B run cases/periodic_box_3d.yaml -q --threads 1 --out $out --set resolution.dx=0.017241379310344827 --set time.max_steps=$st --set time.end=100 > $out/log.txt 2>&1
+    $B run cases/periodic_box_3d.yaml -q --threads 1 --overwrite --out $out --set resolution.dx=0.017241379310344827 --set time.max_steps=$st --set time.end=100 > $out/log.txt 2>&1
   echo "np=$np steps=$st $(cat $out/time.txt) load=$(cut -d' ' -f1 /proc/loadavg)"
 done; done

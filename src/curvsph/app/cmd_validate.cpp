@@ -5,7 +5,9 @@
 #include <iostream>
 
 #include "curvsph/app/command.hpp"
+#include "curvsph/app/thread_option.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/solver/stop_signal.hpp"
 #include "curvsph/validation/study.hpp"
 
 namespace curvsph::app {
@@ -34,18 +36,22 @@ const CommandRegistration reg{
                   ->capture_default_str();
               sub.add_option("--source", a->source, "repository root (cases/, scripts/)")
                   ->capture_default_str();
-              sub.add_option("--threads,-t", a->threads, "OpenMP threads (0: all cores)");
+              add_threads_option(sub, a->threads);
               sub.add_option("--seeds", a->seeds,
                              "random initialisations per configuration, for studies that have them "
                              "(0: the study's default)");
               return [a] {
+                // SIGINT / SIGTERM: the current run ends after its step and writes its
+                // outputs, then no further run or study starts; exit 128 + signal.
+                stop_ends_program(true);
+                const int threads = checked_threads(a->threads);
                 bool found = false;
                 for (const auto& s : validation_studies()) {
                   if (a->name != "all" && a->name != s.name) continue;
                   found = true;
                   StudyContext ctx{std::filesystem::path(a->out) / s.name, a->source, a->quick,
-                                   a->threads, a->seeds};
-                  if (a->threads > 0) omp_set_num_threads(a->threads);
+                                   threads, a->seeds};
+                  if (threads > 0) omp_set_num_threads(threads);
                   std::cerr << "validate " << s.name << (a->quick ? " (quick)" : "") << " -> "
                             << ctx.out_dir.string() << "\n";
                   const StudyResult r = s.run(ctx);

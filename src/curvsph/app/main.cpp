@@ -6,6 +6,7 @@
 #include "curvsph/app/command.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/parallel/communicator.hpp"
+#include "curvsph/solver/stop_signal.hpp"
 
 namespace curvsph::app {
 std::vector<Command>& command_registry() {
@@ -48,6 +49,9 @@ int main(int argc, char** argv) {
   } catch (const InstabilityError& e) {
     if (speaker) std::cerr << "unstable: " << e.what() << "\n";
     return kExitInstability;
+  } catch (const Interrupted& e) {
+    if (speaker) std::cerr << "interrupted by signal " << e.signal << "\n";
+    return 128 + e.signal;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

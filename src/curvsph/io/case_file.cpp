@@ -7,6 +7,7 @@
 
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_overrides.hpp"
+#include "curvsph/io/yaml_read.hpp"
 
 namespace curvsph {
 namespace {
@@ -199,16 +200,7 @@ RegionSpec read_region(const Keys& k, int dim) {
 }  // namespace
 
 Case read_case(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path.string());
-  } catch (const YAML::BadFile&) {
-    throw InputError(path.string(), "", "cannot open the case file");
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path.string(), "",
-                     fmt::format("YAML syntax error at line {}, column {}: {}", e.mark.line + 1,
-                                 e.mark.column + 1, e.msg));
-  }
+  YAML::Node root = yaml::load_file(path.string());
   apply_overrides(root, overrides);
   return read_case(root, path);
 }

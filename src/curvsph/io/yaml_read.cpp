@@ -1,10 +1,19 @@
 #include "curvsph/io/yaml_read.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "curvsph/core/error.hpp"
 
 namespace curvsph::yaml {
+
+namespace {
+// A case or geometry file is a few kB (meshes and CAD sit in files of their own); reading
+// stops here rather than filling the memory from a device or a huge file.
+constexpr std::size_t kMaxYamlBytes = std::size_t{64} << 20;
+}  // namespace
 
 std::string join(const std::string& path, std::string_view key) {
   if (path.empty()) return std::string(key);
@@ -155,10 +164,34 @@ void throw_zero_vector(const std::string& file, const std::string& path) {
 }
 
 YAML::Node load_file(const std::string& file) {
+  // Read here rather than by YAML::LoadFile: a directory given as the file exited 1, and a NUL
+  // byte came out as yaml-cpp's "unknown escape character".
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(file, "", "is a directory, not a YAML file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, "", "cannot open file");
+  std::string text;
+  char buf[1 << 16];
+  std::size_t line = 1;
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    const std::string_view chunk(buf, static_cast<std::size_t>(in.gcount()));
+    if (const auto nul = chunk.find('\0'); nul != std::string_view::npos) {
+      line += static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n') +
+                                       std::count(chunk.begin(), chunk.begin() + nul, '\n'));
+      throw InputError(
+          file, "",
+          "contains a NUL byte on line " + std::to_string(line) + ": not a YAML text file");
+    }
+    text.append(chunk);
+    if (text.size() > kMaxYamlBytes)
+      throw InputError(file, "",
+                       "larger than " + std::to_string(kMaxYamlBytes >> 20) +
+                           " MiB: not a case or geometry file");
+  }
+  if (in.bad()) throw InputError(file, "", "cannot read file");
   try {
-    return YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    throw InputError(file, "", "cannot open file");
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file, "",
                      "YAML syntax error at line " + std::to_string(e.mark.line + 1) + ", column " +

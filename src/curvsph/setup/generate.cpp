@@ -1,5 +1,7 @@
 #include "curvsph/setup/generate.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -10,12 +12,31 @@
 namespace curvsph {
 namespace {
 
+// Lattice points one region may span: far beyond any run's memory, and below the range of
+// long, so that counts checked against it in double convert safely (dx = 1e-20 overflowed
+// lround and gave one particle).
+constexpr double kMaxLatticePoints = 1e12;
+
+// A count of dx steps checked in double before it becomes a long.
+long checked_count(double steps, double dx, const std::string& file, const std::string& key) {
+  if (!(std::isfinite(steps) && steps < kMaxLatticePoints))
+    throw InputError(file, "resolution.dx",
+                     fmt::format("dx = {:g} gives {:.3g} lattice steps across {} (limit {:.0e})",
+                                 dx, steps, key, kMaxLatticePoints));
+  return std::max(1L, std::lround(steps));
+}
+
 // Cell-centred lattice points of [lo, hi) per axis that satisfy `inside`.
 template <class Inside>
 void lattice(const Vec3d& lo, const Vec3d& hi, int dim, double dx, Inside inside,
-             std::vector<GeneratedPoint>& out) {
+             std::vector<GeneratedPoint>& out, const std::string& file, const std::string& key) {
   std::array<long, 3> n{1, 1, 1};
-  for (int d = 0; d < dim; ++d) n[d] = std::max(1L, std::lround((hi[d] - lo[d]) / dx));
+  double total = 1;
+  for (int d = 0; d < dim; ++d) {
+    n[d] = checked_count((hi[d] - lo[d]) / dx, dx, file, key);
+    total *= static_cast<double>(n[d]);
+  }
+  checked_count(total, dx, file, key);
   const double vol = std::pow(dx, dim);
   for (long k = 0; k < n[2]; ++k)
     for (long j = 0; j < n[1]; ++j)
@@ -104,7 +125,7 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
   switch (r.kind) {
     case RegionSpec::Kind::box:
       lattice(
-          r.min, r.max, dim, dx, [](const Vec3d&) { return true; }, pts);
+          r.min, r.max, dim, dx, [](const Vec3d&) { return true; }, pts, file, key);
       break;
     case RegionSpec::Kind::disk:
     case RegionSpec::Kind::ball: {
@@ -120,11 +141,13 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
             for (int d = 0; d < dim; ++d) d2 += (x[d] - r.center[d]) * (x[d] - r.center[d]);
             return d2 < r.radius * r.radius;
           },
-          pts);
+          pts, file, key);
       break;
     }
     case RegionSpec::Kind::annulus: {
       if (dim != 2) throw InputError(file, key, "an annulus region is 2-D");
+      // Rings across the gap times particles on the outer ring, checked before lround.
+      checked_count((r.r_out - r.r_in) / dx * (2 * std::numbers::pi * r.r_out / dx), dx, file, key);
       const AnnulusRings rings = annulus_rings(r, dx);
       append_annulus_rings(r, rings, 0, rings.count, dx, pts);
       break;
@@ -135,6 +158,36 @@ std::vector<GeneratedPoint> generate_region(const RegionSpec& r, int dim, double
   if (pts.empty() && r.kind != RegionSpec::Kind::inside_walls)
     throw InputError(file, key, "the region holds no particle at this resolution");
   return pts;
+}
+
+double estimate_particle_count(const Case& c) {
+  const int D = c.dimension;
+  double count = 0;
+  for (const FluidSpec& f : c.fluids) {
+    const RegionSpec& r = f.region;
+    double volume = 1;
+    switch (r.kind) {
+      case RegionSpec::Kind::box:
+      case RegionSpec::Kind::inside_walls: {
+        const bool box = r.kind == RegionSpec::Kind::box;
+        for (int d = 0; d < D; ++d)
+          volume *= box ? r.max[d] - r.min[d] : c.domain_max[d] - c.domain_min[d];
+        break;
+      }
+      case RegionSpec::Kind::disk:
+      case RegionSpec::Kind::ball:
+        volume = D == 2 ? std::numbers::pi * r.radius * r.radius
+                        : 4.0 / 3.0 * std::numbers::pi * std::pow(r.radius, 3);
+        break;
+      case RegionSpec::Kind::annulus:
+        volume = std::numbers::pi * (r.r_out * r.r_out - r.r_in * r.r_in);
+        break;
+    }
+    // Divided axis by axis: dx^D underflows to 0 for dx = 1e-200.
+    for (int d = 0; d < D; ++d) volume /= c.dx;
+    count += volume;
+  }
+  return count;
 }
 
 template <int D>

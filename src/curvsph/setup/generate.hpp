@@ -33,6 +33,12 @@ AnnulusRings annulus_rings(const RegionSpec& annulus, double dx);
 void append_annulus_rings(const RegionSpec& annulus, const AnnulusRings& rings, long k_begin,
                           long k_end, double dx, std::vector<GeneratedPoint>& out);
 
+// The number of particles generate_particles will make, from the regions' volumes / dx^D
+// (an inside_walls region counts its whole domain box; regions are not intersected), before
+// any is made: the memory check of a run (solver/run_guards.hpp). A double: it may exceed
+// every integer type.
+double estimate_particle_count(const Case& c);
+
 // All fluids of the case into P (mass = rho0 * volume, velocity from the fluid spec). Points
 // closer than 0.3·dx to a wall, or on its far side, are dropped, so a region may overlap the
 // walls; `inside_walls` fills the domain box on the fluid side of every wall. Fluids are

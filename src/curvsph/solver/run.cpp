@@ -5,12 +5,12 @@
 
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <fstream>
 
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/core/threads.hpp"
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
 #include "curvsph/io/pvtp.hpp"
@@ -18,40 +18,14 @@
 #include "curvsph/io/vtk_writer.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
+#include "curvsph/solver/run_guards.hpp"
 #include "curvsph/solver/solver.hpp"
+#include "curvsph/solver/stop_signal.hpp"
 
 namespace curvsph {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Set by SIGINT / SIGTERM while a time loop runs: the loop ends after the current step
-// (run.hpp). A signal handler may only store to a volatile sig_atomic_t.
-volatile std::sig_atomic_t g_stop_requested = 0;
-extern "C" void request_stop(int) {
-  g_stop_requested = 1;
-}
-
-// Installs request_stop for SIGINT and SIGTERM for the lifetime of the time loop and puts
-// the previous handlers back afterwards (a second run in the same process, tests).
-class StopOnSignal {
- public:
-  StopOnSignal() {
-    g_stop_requested = 0;
-    old_int_ = std::signal(SIGINT, request_stop);
-    old_term_ = std::signal(SIGTERM, request_stop);
-  }
-  ~StopOnSignal() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  StopOnSignal(const StopOnSignal&) = delete;
-  StopOnSignal& operator=(const StopOnSignal&) = delete;
-
- private:
-  void (*old_int_)(int) = SIG_DFL;
-  void (*old_term_)(int) = SIG_DFL;
-};
 
 // The time of a snapshot, from the series.pvd beside it (the writer names every snapshot
 // there); throws if the file is not listed.
@@ -121,13 +95,21 @@ Particles<D> owned_part(const Solver<D>& s) {
 
 template <int D>
 nlohmann::json run_typed(const Case& c, const RunOptions& o) {
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  // Capped at the processors available (core/threads.hpp; `run` warns).
+  if (const int threads = cap_threads(o.threads).threads; threads > 0) omp_set_num_threads(threads);
   const auto wall_start = std::chrono::steady_clock::now();
   const mpi::Comm comm = mpi::Comm::world();
   const bool parallel = comm.size() > 1;
   // [mpi] Rank 0 writes the shared files (log, series, probes, metrics); every rank writes
   // its own piece of each snapshot.
   const bool writer = o.write_files && comm.root();
+  // Refusals before anything is allocated or written (run_guards.hpp); rank 0 checks and
+  // clears the output directory.
+  mpi::agree_on_input(comm, [&] {
+    check_output_count(c, o.write_files && !c.probes.empty(), o.force);
+    check_memory(c, o.max_memory);
+    if (writer) prepare_output_dir(o.out_dir, o.overwrite, o.restart);
+  });
   if (o.write_files) fs::create_directories(o.out_dir);
   RunLog log(o.out_dir / "log.txt", writer);
   log("curvsph run: case '{}' from {}", c.name, c.file_name());
@@ -278,7 +260,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // the sizes these figures are computed at).
   CellList<D> gathered_cells;
   gathered_cells.configure(solver.cells().support(), c.domain_min, c.domain_max, c.periodic);
+  double last_probe_time = -1;
   auto write_probes = [&](double t) {
+    last_probe_time = t;
     if (!parallel) {
       if (probes) probes->write_row(t, solver.particles(), solver.cells(), solver.kernel());
       return;
@@ -309,11 +293,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   const double eps = 1e-9 * std::max(1.0, t_end);
   const double out_every = c.output_every > 0 ? c.output_every : t_end;
   const double probe_every = c.probe_every > 0 ? c.probe_every : out_every;
-  // The first output and probe times after the start (t = 0, or a restart's time).
-  auto first_after = [&](double every) {
-    return (std::floor(solver.time() / every + 1e-9) + 1) * every;
-  };
-  double next_out = first_after(out_every), next_probe = first_after(probe_every);
+  // Output and probe times after the start (t = 0, or a restart's time), multiples of every.
+  OutputSchedule out_times(out_every, solver.time(), eps);
+  OutputSchedule probe_times(probe_every, solver.time(), eps);
   write_snapshot("");
   if (any_probes) write_probes(solver.time());
   observe();
@@ -326,24 +308,22 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   try {
     while (solver.time() < t_end - eps && (c.max_steps == 0 || solver.steps() < c.max_steps)) {
       // [mpi] every rank stops at the same step when any was signalled.
-      stopped = g_stop_requested != 0;
+      stopped = stop_signal() != 0;
       if (parallel) stopped = comm.max(static_cast<std::int64_t>(stopped)) > 0;
       if (stopped) {
         log("stopped by a signal at t = {:.6g}, step {}", solver.time(), solver.steps());
         break;
       }
       const double t = solver.time();
-      const double cap = std::min({t_end - t, next_out - t, next_probe - t});
+      const double cap = std::min({t_end - t, out_times.next() - t, probe_times.next() - t});
       solver.step(static_cast<Real>(cap));
       const double tn = solver.time();
-      if (any_probes && tn >= next_probe - eps) write_probes(tn);
-      while (next_probe <= tn + eps) next_probe += probe_every;
-      if (tn >= next_out - eps) {
+      if (probe_times.reached(tn) && any_probes) write_probes(tn);
+      if (out_times.reached(tn)) {
         write_snapshot("");
         observe();
         log("t = {:.6g}, step {}, dt = {:.4g}", tn, solver.steps(), solver.dt());
       }
-      while (next_out <= tn + eps) next_out += out_every;
       progress.update(solver.steps(), tn, solver.dt());
     }
   } catch (const InstabilityError& e) {
@@ -392,6 +372,9 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     write_snapshot("");
     observe();
   }
+  // Likewise the probes: a run cut by time.max_steps or a signal ends its probe series with
+  // the state it stopped at, as its snapshots.
+  if (!unstable && any_probes && solver.time() != last_probe_time) write_probes(solver.time());
   const double loop_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
   const double wall =
@@ -444,7 +427,12 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
 }  // namespace
 
 nlohmann::json run_case(const Case& c, const RunOptions& o) {
-  return c.dimension == 2 ? run_typed<2>(c, o) : run_typed<3>(c, o);
+  // Where a stop ends the program (stop_signal.hpp), no run starts after one, and a stopped
+  // run ends it once its outputs are written.
+  if (stop_ends_program() && stop_signal() != 0) throw Interrupted{stop_signal()};
+  nlohmann::json m = c.dimension == 2 ? run_typed<2>(c, o) : run_typed<3>(c, o);
+  if (stop_ends_program() && m.value("stopped", 0) != 0) throw Interrupted{stop_signal()};
+  return m;
 }
 
 }  // namespace curvsph

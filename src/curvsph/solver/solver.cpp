@@ -403,10 +403,66 @@ Real Solver<D>::stable_dt() const {
 }
 
 template <int D>
+void Solver<D>::check_dt(Real stable, Real dt) const {
+  const double floor = 1e-12 * case_.t_end;
+  if (stable >= floor && t_ + static_cast<double>(dt) != t_) return;
+  // [mpi] dt is the minimum over the ranks, so every rank is here; each names its own
+  // particle and raise_first keeps the lowest rank's.
+  const Index n = decomp_.owned();
+  if (n == 0) {  // a rank without particles has none to name
+    mpi::raise_first(decomp_.comm(), std::optional<InstabilityError>());
+    return;
+  }
+  Index iv = 0, ia = 0;
+  for (Index i = 1; i < n; ++i) {
+    if (!(P_.v[i].squaredNorm() <= P_.v[iv].squaredNorm())) iv = i;
+    if (!(P_.a[i].squaredNorm() <= P_.a[ia].squaredNorm())) ia = i;
+  }
+  // Which limit of stable_dt() is the smallest: the acoustic one names the fastest particle,
+  // the force one the most accelerated, the viscous one the fluid of the largest nu.
+  const Real h = W_.h, vmax = P_.v[iv].norm(), amax = P_.a[ia].norm();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const Real dt_cfl = static_cast<Real>(case_.cfl) * h / (F_.eos.c0 + vmax);
+  const Real dt_force = amax > 0 ? Real(0.25) * std::sqrt(h / amax) : inf;
+  const Real dt_visc = nu_max_ > 0 ? Real(0.125) * h * h / nu_max_ : inf;
+  const Real dt_set = case_.dt_max > 0 ? static_cast<Real>(case_.dt_max) : inf;
+  std::string limit;
+  long id = -1;
+  if (dt_set < std::min({dt_cfl, dt_force, dt_visc})) {
+    limit = fmt::format("time.dt_max = {:.3g}", case_.dt_max);
+  } else if (!(dt_visc < std::min(dt_cfl, dt_force))) {
+    id = static_cast<long>(dt_force < dt_cfl ? P_.id[ia] : P_.id[iv]);
+    limit = dt_force < dt_cfl
+                ? fmt::format("particle {} with |a| = {:.3g} (force limit 0.25 sqrt(h / |a|))", id,
+                              amax)
+                : fmt::format("particle {} with |v| = {:.3g} (acoustic limit cfl h / (c0 + |v|))",
+                              id, vmax);
+  } else {
+    std::size_t f = 0;
+    for (std::size_t k = 0; k < F_.viscosity.size(); ++k)
+      if (F_.viscosity[k] / F_.rho0[k] == nu_max_) f = k;
+    limit = fmt::format(
+        "the viscous limit 0.125 h^2 / nu of fluids.{} (nu = viscosity / rho0 = "
+        "{:.3g})",
+        f, nu_max_);
+  }
+  std::optional<InstabilityError> err;
+  err.emplace(fmt::format("step {}, t = {:.6g}: time step collapsed: dt = {:.3g} {} (time.end "
+                          "= {:.3g}); set by {}",
+                          steps_, t_, static_cast<double>(dt),
+                          stable >= floor ? "does not advance t" : "is below 1e-12 time.end",
+                          case_.t_end, limit),
+              steps_, id);
+  mpi::raise_first(decomp_.comm(), err);
+}
+
+template <int D>
 void Solver<D>::step(Real dt_cap) {
   decomp_.drop_halo(P_);  // [mpi] integrate owned particles only
   if (steps_ > 0 && steps_ % kResortEvery == 0) resort();
-  dt_ = std::min(stable_dt(), dt_cap);
+  const Real stable = stable_dt();
+  check_dt(stable, std::min(stable, dt_cap));
+  dt_ = std::min(stable, dt_cap);
   const Real half = dt_ / 2;
   const Index n = static_cast<Index>(P_.size());
   {

@@ -101,6 +101,11 @@ class Solver {
 
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
+  // Throws InstabilityError "time step collapsed" when the step dt (stable_dt() capped by the
+  // caller) does not advance t, or stable_dt() is below 1e-12 time.end (a run of more than
+  // 10^12 steps: rho0 = 1e-300 or a velocity of 1e200 gave dt = 0 for ever), naming the
+  // particle whose |v| or |a| sets it.
+  void check_dt(Real stable, Real dt) const;
   // Throws InstabilityError on NaN, on density outside [0.5, 2] rho0 when density.clamp is
   // off, and when more than time.max_removed_fraction of the particles were removed (on every
   // rank when any rank finds such a particle).

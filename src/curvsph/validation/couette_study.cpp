@@ -49,6 +49,7 @@ struct Runner {
     c.make_strays_fatal();  // the study reports where a wall first fails
     RunOptions o;
     o.out_dir = ctx.out_dir / "runs" / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     o.progress = true;
     try {

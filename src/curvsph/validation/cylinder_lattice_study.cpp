@@ -14,6 +14,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -29,6 +30,7 @@
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/io/case_key.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph/solver/stop_signal.hpp"
 #include "curvsph/validation/study.hpp"
 
 namespace curvsph {
@@ -201,6 +203,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
   // Read by the num_threads clause, which clang's static analyzer does not see.
   // NOLINTNEXTLINE(clang-analyzer-deadcode.DeadStores)
   const int workers = ctx.threads > 0 ? ctx.threads : omp_get_max_threads();
+  std::atomic<int> interrupted{0};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(workers)
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     const Job& job = jobs[j];
@@ -220,10 +223,14 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       c.make_strays_fatal();  // t_max: the survival time of Vela Vela's Fig. 9
       RunOptions o;
       o.out_dir = dir;
+      o.overwrite = true;  // a study redoes its runs in its own folders
       o.threads = 1;
       o.progress = false;
       try {
         fig9[m] = run_case(c, o);
+      } catch (const Interrupted& e) {
+        interrupted = e.signal;  // no exception may leave the parallel loop
+        continue;
       } catch (const std::exception& e) {
         // A Fig. 9 run has no result to show; stop the study after the pool (no throw here).
 #pragma omp critical(lattice_log)
@@ -259,6 +266,9 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
       run.done = true;
     } catch (const InputError& e) {
       run.refused = e.reason();
+    } catch (const Interrupted& e) {
+      interrupted = e.signal;
+      continue;
     } catch (const std::exception& e) {
       run.refused = e.what();
     }
@@ -272,6 +282,9 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
     }
   }
   csv.close();
+  // Stopped by SIGINT / SIGTERM (solver/stop_signal.hpp): the runs still queued returned at
+  // once; the finished ones are in tmax_runs.csv for the next invocation.
+  if (interrupted) throw Interrupted{interrupted};
 
   std::string table9 =
       "| map | particles | steps | t_max | penetrations | mean v_x at the end | rel. change of "

@@ -72,6 +72,7 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
       const Case c = read_case(case_path, settings);
       RunOptions o;
       o.out_dir = dir;
+      o.overwrite = true;  // a study redoes its runs in its own folders
       o.threads = ctx.threads;
       try {
         m = run_case(c, o);

@@ -39,6 +39,7 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx) {
     Case c = read_case(case_path, sets);
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     const auto m = run_case(c, o);
     const double left = m["contact_angle_deg_left"], right = m["contact_angle_deg_right"],

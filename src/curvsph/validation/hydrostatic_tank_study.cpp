@@ -107,6 +107,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     overrides.push_back("output.vtk=false");
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     o.progress = true;
     nlohmann::json m = cached_run(o.out_dir, fingerprint, overrides);

@@ -44,6 +44,7 @@ StudyResult run_node_density_study(const StudyContext& ctx) {
     const Case c = read_case(path, sets);
     RunOptions o;
     o.out_dir = ctx.out_dir / shape;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     o.progress = false;
     const auto m = run_case(c, o);

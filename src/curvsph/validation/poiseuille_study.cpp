@@ -19,6 +19,7 @@ StudyResult run_poiseuille_study(const StudyContext& ctx) {
   std::filesystem::create_directories(ctx.out_dir);
   RunOptions o;
   o.out_dir = ctx.out_dir / "run";
+  o.overwrite = true;  // a study redoes its runs in its own folders
   o.threads = ctx.threads;
   o.progress = true;
   const auto m = run_case(c, o);

@@ -4,15 +4,18 @@
 // communication share, halo fractions and message counts, and the model of
 // analysis/scaling_model.hpp fitted to them and extrapolated to 64 and 1024 ranks.
 #include <fmt/format.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "curvsph/analysis/scaling_model.hpp"
 #include "curvsph/parallel/communicator.hpp"
+#include "curvsph/solver/stop_signal.hpp"
 #include "curvsph/validation/study.hpp"
 
 namespace curvsph {
@@ -41,7 +44,7 @@ nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
                     CURVSPH_MPIEXEC, getuid() == 0 ? " --allow-run-as-root" : "", ranks);
 #endif
   cmd += fmt::format(
-      "'{}' run '{}' -q --threads 1 --out '{}' --set resolution.dx={:.17g} --set "
+      "'{}' run '{}' -q --threads 1 --overwrite --out '{}' --set resolution.dx={:.17g} --set "
       "time.max_steps={} --set time.end=100 {} > '{}' 2>&1",
       self, (ctx.source_dir / "cases" / "periodic_box_3d.yaml").string(), out.string(), 1.0 / cells,
       steps, extra, (out / "stdout.txt").string());
@@ -49,11 +52,18 @@ nlohmann::json run_box(const StudyContext& ctx, int ranks, int cells, int steps,
   setenv("OMP_WAIT_POLICY", "passive", 0);
   std::cerr << "scaling: " << ranks << " rank(s), " << cells << "^3 particles, " << steps
             << " steps\n";
-  if (std::system(cmd.c_str()) != 0)
+  const int rc = std::system(cmd.c_str());
+  if (WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM))
+    throw Interrupted{WTERMSIG(rc)};
+  if (rc != 0)
     throw std::runtime_error("scaling: run failed: " + cmd + " (see " +
                              (out / "stdout.txt").string() + ")");
   std::ifstream in(out / "metrics.json");
-  return nlohmann::json::parse(in);
+  nlohmann::json m = nlohmann::json::parse(in);
+  // The run was stopped by SIGINT / SIGTERM (which std::system keeps from this process):
+  // stop the study as an in-process run would (solver/stop_signal.hpp).
+  if (m.value("stopped", 0) != 0) throw Interrupted{SIGINT};
+  return m;
 }
 
 // The fastest of `reps` identical runs (timings on a shared machine: the best run is the one

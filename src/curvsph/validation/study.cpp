@@ -1,10 +1,14 @@
 #include "curvsph/validation/study.hpp"
 
 #include <fmt/format.h>
+#include <sys/wait.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+
+#include "curvsph/solver/stop_signal.hpp"
 
 namespace curvsph {
 
@@ -27,6 +31,9 @@ void run_plot_script(const StudyContext& ctx, const std::string& script,
   std::string cmd = "/usr/bin/python3 '" + path.string() + "'";
   for (const auto& a : args) cmd += " '" + a + "'";
   const int rc = std::system(cmd.c_str());
+  // Ctrl-C reaches the script, which std::system keeps from this process: pass it on.
+  if (WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM))
+    throw Interrupted{WTERMSIG(rc)};
   if (rc != 0) std::cerr << "warning: plotting failed (" << cmd << "), exit " << rc << "\n";
 }
 

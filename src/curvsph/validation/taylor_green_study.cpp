@@ -34,6 +34,7 @@ StudyResult run_taylor_green_study(const StudyContext& ctx) {
     Case c = read_case(case_path, sets);
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     o.progress = true;
     const auto m = run_case(c, o);

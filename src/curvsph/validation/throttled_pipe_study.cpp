@@ -43,6 +43,7 @@ StudyResult run_throttled_pipe_study(const StudyContext& ctx) {
         case_path, {fmt::format("resolution.dx={}", dx), "time.end=" + t_end, "output.every=0.1"});
     RunOptions o;
     o.out_dir = ctx.out_dir / tag;
+    o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
     const auto m = run_case(c, o);
     const double fv = m["flux_variation"], re = m["reynolds"], vy = m["midline_vy_max_rel"],

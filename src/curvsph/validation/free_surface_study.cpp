@@ -75,6 +75,7 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
       o.out_dir = ctx.out_dir / "runs" / dir_name;
       o.threads = ctx.threads;
       o.progress = true;
+      o.overwrite = true;  // the study's own directory, rerun
       nlohmann::json m;
       try {
         m = run_case(c, o);

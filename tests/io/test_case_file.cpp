@@ -365,7 +365,8 @@ TEST_F(CaseFileOnDisk, RunExitsWith2AndNamesFileAndKey) {
 }
 
 // Taylor–Green at a coarse resolution (400 particles) with a flow speed of the sound speed
-// (U = 10 = c0): the flow compresses, and the density leaves [0.5, 2] rho0 after ~15 steps.
+// (U = 10 = c0): the flow compresses, and the density leaves [0.5, 2] rho0 after ~15 steps
+// (density.clamp: false; by default the density is clamped and the run goes on).
 // Must exit 3, name the step and particle, and leave particles_unstable.vtp.
 TEST_F(CaseFileOnDisk, UnstableRunExitsWith3AndLeavesSnapshot) {
   const fs::path tg = fs::path(CURVSPH_SOURCE_DIR) / "cases" / "taylor_green_2d.yaml";
@@ -374,7 +375,7 @@ TEST_F(CaseFileOnDisk, UnstableRunExitsWith3AndLeavesSnapshot) {
   const int code = run("run " + tg.string() + " --out " + out.string() +
                        " --quiet --threads 1 --set initial.taylor_green.U=10"
                        " --set analysis.taylor_green.U=10 --set resolution.dx=0.05"
-                       " --set output.every=10");
+                       " --set output.every=10 --set density.clamp=false");
   EXPECT_EQ(code, 3) << err_ << out_;
   EXPECT_NE(err_.find("unstable"), std::string::npos) << err_;
   EXPECT_NE(err_.find("density out of"), std::string::npos) << err_;
@@ -385,13 +386,14 @@ TEST_F(CaseFileOnDisk, UnstableRunExitsWith3AndLeavesSnapshot) {
 }
 
 // With c0 = 0.1 the initial Taylor–Green pressure field maps to densities far outside
-// [0.5, 2] rho0: the run is unstable before its first step and must still exit 3 with a
-// snapshot of the offending state.
+// [0.5, 2] rho0 (density.clamp: false): the run is unstable before its first step and must
+// still exit 3 with a snapshot of the offending state.
 TEST_F(CaseFileOnDisk, UnstableInitialStateExitsWith3AndLeavesSnapshot) {
   const fs::path tg = fs::path(CURVSPH_SOURCE_DIR) / "cases" / "taylor_green_2d.yaml";
   const fs::path out = dir_ / "out";
   const int code = run("run " + tg.string() + " --out " + out.string() +
-                       " --quiet --threads 1 --set eos.c0=0.1 --set resolution.dx=0.05");
+                       " --quiet --threads 1 --set eos.c0=0.1 --set resolution.dx=0.05"
+                       " --set density.clamp=false");
   EXPECT_EQ(code, 3) << err_ << out_;
   EXPECT_NE(err_.find("step 0"), std::string::npos) << err_;
   EXPECT_TRUE(fs::exists(out / "particles_unstable.vtp")) << err_;
@@ -401,9 +403,10 @@ TEST_F(CaseFileOnDisk, UnstableInitialStateExitsWith3AndLeavesSnapshot) {
 TEST_F(CaseFileOnDisk, UnstableRunWithVtkOffStillLeavesSnapshot) {
   const fs::path tg = fs::path(CURVSPH_SOURCE_DIR) / "cases" / "taylor_green_2d.yaml";
   const fs::path out = dir_ / "out";
-  const int code = run("run " + tg.string() + " --out " + out.string() +
-                       " --quiet --threads 1 --set eos.c0=0.1 --set resolution.dx=0.05"
-                       " --set output.vtk=false");
+  const int code =
+      run("run " + tg.string() + " --out " + out.string() +
+          " --quiet --threads 1 --set eos.c0=0.1 --set resolution.dx=0.05 --set density.clamp=false"
+          " --set output.vtk=false");
   EXPECT_EQ(code, 3) << err_ << out_;
   EXPECT_TRUE(fs::exists(out / "particles_unstable.vtp")) << err_;
   EXPECT_FALSE(fs::exists(out / "particles_000000.vtp"));

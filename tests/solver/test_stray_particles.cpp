@@ -43,7 +43,7 @@ TEST(StrayParticles, ParticleInsideACircularObstacleIsPutBackAlongTheNormal) {
   const Vec<2> tangent(-radial.y(), radial.x());
   Vec<2> v = Real(-2) * radial + Real(0.5) * tangent;  // moving into the obstacle
   ASSERT_EQ(project_out_of_walls<2>(walls, x, v, 0.01), WallFix::projected);
-  EXPECT_NEAR(x.norm(), 1.01, 1e-12);                    // depth 0.01 outside the circle
+  EXPECT_NEAR(x.norm(), 1.01, 1e-12);                   // depth 0.01 outside the circle
   EXPECT_NEAR(x.normalized().dot(radial), 1.0, 1e-12);  // along the normal
   EXPECT_NEAR(v.dot(radial), 0.0, 1e-12);               // normal velocity removed
   EXPECT_NEAR(v.dot(tangent), 0.5, 1e-12);              // tangential velocity kept
@@ -77,18 +77,18 @@ TEST(StrayParticles, ParticlePastATankCornerEndsInsideTheTank) {
 TEST(StrayParticles, RemovalBoxIsTheDomainOrTheGrownParticleAndTankBox) {
   const std::vector<Vec<2>> x{Vec<2>(0, 0), Vec<2>(1, 0.5)};
   const WallSet<2> none;
-  const auto own = removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false}, x,
-                                  none, 0.1);
+  const auto own =
+      removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false}, x, none, 0.1);
   EXPECT_FALSE(own.outside(Vec<2>(-0.9, 1.4)));  // grown by the largest extent (1)
   EXPECT_TRUE(own.outside(Vec<2>(-1.1, 0)));
   WallSet<2> tank;  // a tank 4 long: the fluid may reach all of it, and beyond by 4
   tank.add(std::make_shared<BoxWall<2>>(Vec2d(0, 0), Vec2d(4, 1), FluidSide::inside));
-  const auto in_tank = removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false},
-                                      x, tank, 0.1);
+  const auto in_tank =
+      removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false}, x, tank, 0.1);
   EXPECT_FALSE(in_tank.outside(Vec<2>(7.9, 0.5)));
   EXPECT_TRUE(in_tank.outside(Vec<2>(8.1, 0.5)));
-  const auto dom = removal_box<2>(true, Vec3d(0, 0, 0), Vec3d(1, 1, 0), {true, false, false}, x,
-                                  none, 0.1);
+  const auto dom =
+      removal_box<2>(true, Vec3d(0, 0, 0), Vec3d(1, 1, 0), {true, false, false}, x, none, 0.1);
   EXPECT_FALSE(dom.outside(Vec<2>(5, 0.5)));  // periodic axis: never
   EXPECT_TRUE(dom.outside(Vec<2>(0.5, 1.01)));
 }
@@ -125,15 +125,18 @@ TEST(StrayParticles, MoreThanTheAllowedFractionRemovedStopsTheRun) {
 
 TEST(StrayParticles, SummationDensityOfAFreeBlobIsClampedNotFatal) {
   // A free square of fluid with summation density: its edge particles see a third to a half
-  // of a full support, rho < 0.7 rho0, which stopped the run before (exit 3 below 0.5 rho0).
+  // of a full support, rho < 0.7 rho0 (the corners: a quarter of it).
   YAML::Node root = leaving_case();
   root["fluids"][0]["velocity"] = YAML::Load("[0, 0]");
   root["time"]["end"] = 0.002;
   const auto m = test::run_quiet(read_case(root, "blob"), 1);
-  EXPECT_GT(m["density_clamped"].get<long>(), 0);
+  const long clamped = m["density_clamped"].get<long>();
+  EXPECT_GT(clamped, 0);
   EXPECT_EQ(m["particles_removed"].get<long>(), 0);
+  root["density"] = YAML::Load("{clamp: [0.9, 1.1]}");  // a narrower range clamps more
+  EXPECT_GT(test::run_quiet(read_case(root, "blob"), 1)["density_clamped"].get<long>(), clamped);
   root["density"] = YAML::Load("{clamp: false}");
-  EXPECT_THROW(test::run_quiet(read_case(root, "blob"), 1), InstabilityError);
+  EXPECT_EQ(test::run_quiet(read_case(root, "blob"), 1)["density_clamped"].get<long>(), 0);
   root["density"] = YAML::Load("{clamp: [1.2, 1.3]}");
   EXPECT_THROW(read_case(root, "blob"), InputError);
 }

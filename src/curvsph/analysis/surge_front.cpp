@@ -29,8 +29,8 @@ std::vector<Sample> read_front_csv(const std::filesystem::path& path, const std:
     Sample v{};
     char comma = 0;
     if (!(s >> v.T >> comma >> v.Z) || comma != ',' || !std::isfinite(v.T) || !std::isfinite(v.Z))
-      throw InputError(file, key, fmt::format("{}: line '{}' is not 'T,Z'", path.string(),
-                                              line.substr(0, 80)));
+      throw InputError(
+          file, key, fmt::format("{}: line '{}' is not 'T,Z'", path.string(), line.substr(0, 80)));
     out.push_back(v);
   }
   if (out.empty()) throw InputError(file, key, path.string() + ": no data rows");
@@ -140,7 +140,8 @@ std::unique_ptr<Analysis<2>> make_surge_front_analysis(const YAML::Node& params,
         continue;
       }
       double v = 0;
-      if (!kv.second.IsScalar() || !YAML::convert<double>::decode(kv.second, v) || !std::isfinite(v))
+      if (!kv.second.IsScalar() || !YAML::convert<double>::decode(kv.second, v) ||
+          !std::isfinite(v))
         throw InputError(file, kk, "must be a number");
       if (k == "wall")
         wall = v;

@@ -318,8 +318,9 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     if (known && H > 0) c0_default = 10 * std::sqrt(2 * c.gravity.norm() * H);
   }
   if (!top.has("eos") && !c0_default)
-    top.fail("eos", "missing ({type: tait|linear, c0, p0}; c0 may be left out only under gravity "
-                    "with fluid regions of known height)");
+    top.fail("eos",
+             "missing ({type: tait|linear, c0, p0}; c0 may be left out only under gravity "
+             "with fluid regions of known height)");
   eos.allow({"type", "c0", "gamma", "p0"});
   c.eos.type = eos.choice("type", {"tait", "linear"}, "tait") == "tait" ? EosSpec::Type::tait
                                                                         : EosSpec::Type::linear;
@@ -334,8 +335,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   // then pulls the surface together; the continuity equation with delta-SPH does not (Antuono
   // et al. 2010), so it is that case's default.
   c.density.method = den.choice("method", {"summation", "continuity"},
-                                c.free_surface_defaults ? "continuity" : "summation") ==
-                             "summation"
+                                c.free_surface_defaults ? "continuity" : "summation") == "summation"
                          ? DensitySpec::Method::summation
                          : DensitySpec::Method::continuity;
   if (den.has("clamp")) {
@@ -448,8 +448,9 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.boundary.wall_tension = bnd.boolean("wall_tension", !c.free_surface_defaults);
   c.boundary.contact = bnd.non_negative("contact", 0.1);
   if (c.boundary.contact >= 0.5)
-    bnd.fail(bnd.key("contact"), "must be below 0.5 (a fraction of dx; the first particle row "
-                                 "sits at dx/2)");
+    bnd.fail(bnd.key("contact"),
+             "must be below 0.5 (a fraction of dx; the first particle row "
+             "sits at dx/2)");
   if (bnd.has("ghost_pressure") && c.boundary.method != "ghost")
     bnd.fail(bnd.key("ghost_pressure"),
              "applies to method: ghost (boundary integrals always extrapolate the wall pressure "

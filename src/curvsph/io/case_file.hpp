@@ -136,8 +136,8 @@ struct Case {
   RelaxSpec relax;
   double t_end = 0;
   double cfl = 0.2;
-  double dt_max = 0;        // 0: no cap
-  long max_steps = 0;       // 0: unlimited
+  double dt_max = 0;   // 0: no cap
+  long max_steps = 0;  // 0: unlimited
   // time.max_removed_fraction: particles that leave the domain (the domain box, or without one
   // the box of the initial particles grown by twice its largest extent on every side) are
   // removed and counted; more than this fraction of the initial count stops the run (exit 3).

@@ -250,30 +250,18 @@ void Solver<D>::prepare_boundary() {
   const mpi::Comm& comm = decomp_.comm();
   const bool stop = case_.boundary.penetration_stop && !through.empty();
   const double contact = case_.boundary.contact * case_.dx;
-  if (!stop && (contact > 0 || !through.empty())) {
-    // The wall contact and the last resort of boundary.penetration: project
-    // (stray_particles.hpp). The pre-pass is redone on the corrected positions (and the cell
-    // list rebuilt: a particle may change cell), a second pre-pass on the steps where it
-    // happens.
-    close_.clear();
-    if (contact > 0) boundary_->within(static_cast<Real>(contact), close_);
-    close_.insert(close_.end(), through.begin(), through.end());
-    std::sort(close_.begin(), close_.end());
-    close_.erase(std::unique(close_.begin(), close_.end()), close_.end());
-    std::erase_if(close_, [&](Index i) { return i >= decomp_.owned(); });
+  // [mpi] every rank redoes its pre-pass when any put a particle back.
+  if (!stop && comm.max(static_cast<std::int64_t>(through.size())) > 0) {
+    // The last resort of boundary.penetration: project (stray_particles.hpp): a particle that
+    // crossed a wall within this step is put back, and the pre-pass redone on the corrected
+    // positions (the cell list rebuilt: a particle may change cell). Halo copies of a moved
+    // particle keep their position until the next exchange.
     const double depth = contact > 0 ? contact : kProjectDepth * case_.dx;
-    for (const Index i : close_) {
-      const WallFix fix = project_out_of_walls(walls_, P_.x[i], P_.v[i], depth);
-      if (fix == WallFix::projected) ++stray_.projected;
-      if (fix == WallFix::contact) {
-        ++stray_.contacts;
-        contacted_.insert(P_.id[i]);
-      }
+    for (const Index i : through) {
+      if (project_out_of_walls(walls_, P_.x[i], P_.v[i], depth) == WallFix::projected)
+        ++stray_.projected;
       cells_.wrap(P_.x[i]);
     }
-    // [mpi] every rank redoes its pre-pass when any moved a particle (halo copies of a moved
-    // particle keep their position until the next exchange).
-    if (comm.max(static_cast<std::int64_t>(close_.size())) == 0) return;
     cells_.build(P_.x);
     boundary_->prepare(P_, t_);
     through.clear();
@@ -294,6 +282,32 @@ void Solver<D>::prepare_boundary() {
         static_cast<long>(through.size()));
   }
   mpi::raise_first(comm, err);  // [mpi] every rank stops together
+}
+
+template <int D>
+void Solver<D>::apply_contacts() {
+  const double contact = case_.boundary.contact * case_.dx;
+  if (!boundary_ || !(contact > 0)) return;
+  Stopwatch sw{times_.boundary};
+  // The candidates from the pre-pass of this step (the positions have not moved since, but
+  // for shifting, which removes the shift towards a wall within dx of it); each is checked
+  // exactly by project_out_of_walls.
+  close_.clear();
+  boundary_->within(static_cast<Real>(contact), close_);
+  std::sort(close_.begin(), close_.end());
+  close_.erase(std::unique(close_.begin(), close_.end()), close_.end());
+  const Index owned = decomp_.owned();
+  for (const Index i : close_) {
+    if (i >= owned) break;
+    const WallFix fix = project_out_of_walls(walls_, P_.x[i], P_.v[i], contact);
+    if (fix == WallFix::none) continue;
+    if (fix == WallFix::projected) ++stray_.projected;  // (shifted through: not expected)
+    if (fix == WallFix::contact) {
+      ++stray_.contacts;
+      contacted_.insert(P_.id[i]);
+    }
+    cells_.wrap(P_.x[i]);
+  }
 }
 
 template <int D>
@@ -500,6 +514,7 @@ void Solver<D>::step(Real dt_cap) {
     if (boundary_) boundary_->add_shift_sums(P_, n, dx, shift_);  // walls close the support
     apply_shift(P_, n, cells_, W_, dx, static_cast<Real>(case_.shifting), shift_);
   }
+  apply_contacts();
   t_ += dt_;
   ++steps_;
   check_state();
@@ -527,7 +542,8 @@ void Solver<D>::check_state() const {
   const auto& comm = decomp_.comm();
   const std::int64_t removed = comm.sum(static_cast<std::int64_t>(stray_.removed));
   if (!err && removed > 0 &&
-      static_cast<double>(removed) > case_.max_removed_fraction * static_cast<double>(initial_count_))
+      static_cast<double>(removed) >
+          case_.max_removed_fraction * static_cast<double>(initial_count_))
     err.emplace(fmt::format("step {}, t = {:.6g}: {} of {} particles left the domain (more than "
                             "time.max_removed_fraction = {:g}); enlarge domain or check the walls",
                             steps_, t_, removed, initial_count_, case_.max_removed_fraction),

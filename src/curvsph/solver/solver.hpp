@@ -117,10 +117,13 @@ class Solver {
   // Boundary pre-pass, density (summation; or continuity advanced by dt_rho), pressure and
   // accelerations at the current positions.
   void compute_rates(Real dt_rho);
-  // Boundary pre-pass; particles closer than boundary.contact to a wall or past it are put
-  // back (or the run stops, with boundary.penetration: stop) and the pre-pass is redone on
-  // the corrected positions.
+  // Boundary pre-pass; particles past a wall are put back (or the run stops, with
+  // boundary.penetration: stop) and the pre-pass is redone on the corrected positions.
   void prepare_boundary();
+  // The wall contact (solver/stray_particles.hpp), at the end of a step: particles the last
+  // pre-pass found closer than boundary.contact to a wall are stopped at that distance. Done
+  // there rather than before the density pass so that the pre-pass runs once per step.
+  void apply_contacts();
   // Removes particles outside the removal box (after the drift, before migration).
   void remove_strays();
 

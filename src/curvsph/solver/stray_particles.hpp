@@ -58,8 +58,7 @@ struct RemovalBox {
   std::array<bool, 3> periodic{false, false, false};
   bool outside(const Vec<D>& x) const {
     for (int d = 0; d < D; ++d)
-      if (!periodic[static_cast<std::size_t>(d)] &&
-          !(x[d] >= box.min()[d] && x[d] <= box.max()[d]))
+      if (!periodic[static_cast<std::size_t>(d)] && !(x[d] >= box.min()[d] && x[d] <= box.max()[d]))
         return true;
     return false;
   }

@@ -38,7 +38,7 @@ const std::vector<Method>& methods() {
 
 double number_or_nan(const nlohmann::json& m, const char* k) {
   return m.contains(k) && m[k].is_number() ? m[k].get<double>()
-                                          : std::numeric_limits<double>::quiet_NaN();
+                                           : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -96,11 +96,13 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
                          number_or_nan(m, "surge_front_max_rel_error"),
                          number_or_nan(m, "surge_front_rms_rel_error"),
                          number_or_nan(m, "far_wall_runup_max"), number_or_nan(m, "wall_seconds"));
-      table += fmt::format("| {} | {} | {:.3f} / {:.3f} | {:.0f} | {:.0f} ({:.3f} %) | {:.0f} | "
-                           "{:.0f} | {:.0f} |\n",
-                           name, meth.name, reached, c.t_end, n0, proj, 100 * proj / n0, removed,
-                           clamped, number_or_nan(m, "wall_seconds"));
-      const std::string key = fmt::format("free_surface.{}.{}", name, dir_name.substr(name.size() + 1));
+      table += fmt::format(
+          "| {} | {} | {:.3f} / {:.3f} | {:.0f} | {:.0f} ({:.3f} %) | {:.0f} | "
+          "{:.0f} | {:.0f} |\n",
+          name, meth.name, reached, c.t_end, n0, proj, 100 * proj / n0, removed, clamped,
+          number_or_nan(m, "wall_seconds"));
+      const std::string key =
+          fmt::format("free_surface.{}.{}", name, dir_name.substr(name.size() + 1));
       r.metrics[key + ".time_reached"] = reached;
       r.metrics[key + ".particles_projected"] = proj;
       r.metrics[key + ".particles_removed"] = removed;
@@ -134,7 +136,8 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
      << table << "\n## Surge front of the dam break (Martin & Moyce 1952)\n\n"
      << "Front = the largest x of the particles on the floor, over the column width a, against "
         "`../shared/data/martin_moyce/front_a_2.25in.csv`, up to the far wall (x = 16 a).\n\n"
-     << front_table << "\n![surge front](surge_front.png)\n\n" << summary_markdown(r.summary);
+     << front_table << "\n![surge front](surge_front.png)\n\n"
+     << summary_markdown(r.summary);
   return r;
 }
 

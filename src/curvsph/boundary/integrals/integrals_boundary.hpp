@@ -75,7 +75,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   WallForce wall_force_;           // range 0 (never active) unless boundary.wall_force
   bool consistent_ = false;        // boundary.pressure: consistent
   bool tensile_ = false;           // boundary.pressure: tensile_control (consistent where p_i < 0)
-  bool no_tension_ = false;  // boundary.wall_tension: false
+  bool no_tension_ = false;        // boundary.wall_tension: false
   Real dx_ = 0;
   bool built_ = false;
 

@@ -409,5 +409,11 @@ TEST_F(CaseFileOnDisk, UnstableRunWithVtkOffStillLeavesSnapshot) {
   EXPECT_FALSE(fs::exists(out / "particles_000000.vtp"));
 }
 
+// boundary.wall_particles was read and never used: it is an unknown key now.
+TEST(CaseFile, WallParticlesIsAnUnknownKey) {
+  expect_error([](YAML::Node& r) { r["boundary"]["wall_particles"] = true; },
+               "boundary.wall_particles", "unknown key");
+}
+
 }  // namespace
 }  // namespace curvsph

@@ -427,15 +427,14 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   }
 
   const Keys bnd = top.sub("boundary");
-  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure",
-             "ghost_pressure", "penetration", "wall_tension", "contact"});
+  bnd.allow({"method", "map", "velocity", "shepard", "wall_force", "pressure", "ghost_pressure",
+             "penetration", "wall_tension", "contact"});
   c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
   c.boundary.map =
       bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
   c.boundary.velocity = bnd.choice("velocity", {"no_slip", "free_slip"}, "no_slip");
   c.boundary.shepard =
       bnd.choice("shepard", {"geometric", "volume", "monolithic", "none"}, "geometric");
-  c.boundary.wall_particles = bnd.boolean("wall_particles", false);
   c.boundary.wall_force = bnd.boolean("wall_force", false);
   c.boundary.pressure =
       bnd.choice("pressure", {"symmetric", "consistent", "tensile_control"}, "symmetric");

@@ -58,7 +58,6 @@ struct BoundarySpec {
   std::string map = "mirror_beta";
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
-  bool wall_particles = false;
   bool wall_force = false;  // repulsion closer than 0.1 dx (Calderon §3.2), both methods
   std::string pressure = "symmetric";   // integrals: symmetric | consistent | tensile_control
   std::string ghost_pressure = "copy";  // ghost: copy | hydrostatic (p_s + rho_s g.(x_g - x_s))

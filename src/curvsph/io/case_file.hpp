@@ -144,6 +144,13 @@ struct Case {
   double output_every = 0;  // 0: only first and last
   double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
+  // output.precision (float32 | float64: the particle fields' floating arrays; positions stay
+  // float64), output.compress (zlib | none) and output.fields (the Particles field names
+  // written; position always), io/vtk_writer.hpp. The default fields are what a picture and
+  // a restart need: position, velocity, pressure, density, mass, phase, id.
+  bool output_float32 = true;
+  bool output_zlib = true;
+  std::vector<std::string> output_fields;
   // parallel: MPI domain decomposition. Re-bisect when the largest rank owns more than
   // (1 + rebalance_imbalance) times the mean; check_conservation sums count, mass and ids
   // over the ranks after every migration (metrics: conservation_*).

@@ -60,7 +60,7 @@ TEST(StageReport, SilentWhenQuickOrDisabledReportsWhenSlow) {
     slow.result("10 steps");
   }
   const std::string err = ::testing::internal::GetCapturedStderr();
-  EXPECT_NE(err.find("setup: slow stage (2 s): step 3 / 10\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("setup: slow stage, 2 s: step 3 / 10\n"), std::string::npos) << err;
   EXPECT_EQ(err.find("not yet due"), std::string::npos) << err;
   EXPECT_NE(err.find("setup: slow stage done in 2."), std::string::npos) << err;
   EXPECT_NE(err.find(": 10 steps\n"), std::string::npos) << err;

@@ -1,16 +1,18 @@
 #pragma once
 // Set-up stages that can take seconds (the particle fill, the packing of setup/relax, the
 // wall elements of boundary integrals) say so on stderr once they run longer than
-// kStageReportAfter, so that a long set-up does not look like a hang: a line every few
-// seconds while the stage runs (when it has figures to show) and one when it ends. Quick
-// stages print nothing. Off unless the run enables it (`curvsph run` without --quiet, on
-// MPI rank 0): library users and tests stay silent.
+// kStageReportAfter, so that a long set-up does not look like a hang: while the stage runs,
+// a line updated in place on a terminal (a new line every kStagePipeEvery in a pipe), when
+// it has figures to show, and a closing line. Quick stages print nothing. Lines are cut at
+// 79 characters. Off unless the run enables it (`curvsph run` without --quiet, on MPI rank
+// 0): library users and tests stay silent.
 #include <chrono>
 #include <string>
 
 namespace curvsph {
 
 inline constexpr double kStageReportAfter = 2.0;  // seconds
+inline constexpr double kStagePipeEvery = 5.0;    // seconds, as the progress line in a pipe
 
 void set_stage_reports(bool enabled);
 bool stage_reports();
@@ -23,12 +25,13 @@ class StageReport {
   StageReport& operator=(const StageReport&) = delete;
 
   // `detail()` (a std::string) is called, and its line printed, only when one is due: after
-  // kStageReportAfter, then at most every kStageReportAfter.
+  // kStageReportAfter, then every 0.25 s on a terminal, every kStagePipeEvery in a pipe.
   template <class F>
   void tick(F&& detail) {
     if (!enabled_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_).count() < kStageReportAfter) return;
+    const double wait = !printed_ ? kStageReportAfter : tty_ ? 0.25 : kStagePipeEvery;
+    if (std::chrono::duration<double>(now - (printed_ ? last_ : start_)).count() < wait) return;
     last_ = now;
     print(detail());
   }
@@ -37,7 +40,7 @@ class StageReport {
 
  private:
   void print(const std::string& detail);
-  bool enabled_;
+  bool enabled_, tty_;
   std::string stage_, result_;
   std::chrono::steady_clock::time_point start_, last_;
   bool printed_ = false;

@@ -73,7 +73,7 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
   const double clearance = opt.wall_clearance * opt.dx;
   std::vector<Vec<D>> R;
   const Index n = static_cast<Index>(x.size());
-  StageReport report("packing (setup.relax, integrals)");
+  StageReport report("packing (integrals)");
   for (long step = 0;; ++step) {
     cells.build(x);
     const double r = integrals_residual<D>(x, cells, ex, en, ea, wq, elem_cells, W, volume, R);
@@ -82,11 +82,11 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
     res.steps = step;
     if (r < opt.tolerance || step >= opt.max_steps) {
       report.result(
-          fmt::format("{} steps, BI residual {:.3g} (tolerance {:.3g})", step, r, opt.tolerance));
+          fmt::format("{} steps, residual {:.3g} (tolerance {:.3g})", step, r, opt.tolerance));
       break;
     }
     report.tick([&] {
-      return fmt::format("step {} / {}, BI residual {:.3g} -> {:.3g}", step, opt.max_steps, r,
+      return fmt::format("step {}/{}, BI residual {:.3g} -> {:.3g}", step, opt.max_steps, r,
                          opt.tolerance);
     });
     parallel_for(n, [&](Index i) {

@@ -412,5 +412,37 @@ TEST_F(CaseFileOnDisk, UnstableRunWithVtkOffStillLeavesSnapshot) {
   EXPECT_FALSE(fs::exists(out / "particles_000000.vtp"));
 }
 
+// boundary.wall_particles was read and never used: it is an unknown key now.
+TEST(CaseFile, WallParticlesIsAnUnknownKey) {
+  expect_error([](YAML::Node& r) { r["boundary"]["wall_particles"] = true; },
+               "boundary.wall_particles", "unknown key");
+}
+
+// output.precision, compress and fields (README, Outputs): defaults and bad values.
+TEST(CaseFile, OutputEncodingKeys) {
+  const Case d = read_case(valid(), "case.yaml");
+  EXPECT_TRUE(d.output_float32);
+  EXPECT_TRUE(d.output_zlib);
+  EXPECT_EQ(d.output_fields, (std::vector<std::string>{"position", "velocity", "pressure",
+                                                       "density", "mass", "phase", "id"}));
+  YAML::Node r = valid();
+  r["output"]["precision"] = "float64";
+  r["output"]["compress"] = "none";
+  r["output"]["fields"] = YAML::Load("[pressure, number_density, pressure]");
+  const Case c = read_case(r, "case.yaml");
+  EXPECT_FALSE(c.output_float32);
+  EXPECT_FALSE(c.output_zlib);
+  // position always, duplicates once, in the order given.
+  EXPECT_EQ(c.output_fields, (std::vector<std::string>{"position", "pressure", "number_density"}));
+  expect_error([](YAML::Node& n) { n["output"]["precision"] = "half"; }, "output.precision",
+               "float32 | float64");
+  expect_error([](YAML::Node& n) { n["output"]["compress"] = "gzip"; }, "output.compress",
+               "zlib | none");
+  expect_error([](YAML::Node& n) { n["output"]["fields"] = YAML::Load("[velocity, vel]"); },
+               "output.fields.1", "'vel' is not one of");
+  expect_error([](YAML::Node& n) { n["output"]["fields"] = "velocity"; }, "output.fields",
+               "must be a list");
+}
+
 }  // namespace
 }  // namespace curvsph

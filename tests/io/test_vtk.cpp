@@ -152,17 +152,83 @@ TEST(VtkXml, HeaderAndArrays) {
   }
   EXPECT_EQ(data0 + expect, s.size() - 30);
 
-  // Verts connectivity i, offsets i + 1.
+  // Verts connectivity i, offsets i + 1, Int32 below 2^31 points.
+  EXPECT_NE(head.find("type=\"Int32\" Name=\"connectivity\""), std::string::npos);
+  EXPECT_NE(head.find("type=\"Int32\" Name=\"offsets\""), std::string::npos);
   std::uint64_t nb = 0;
   std::memcpy(&nb, s.data() + data0 + offsets[10], 8);
-  ASSERT_EQ(nb, 17u * 8);
-  for (std::int64_t i = 0; i < 17; ++i) {
-    std::int64_t c = -1, o = -1;
-    std::memcpy(&c, s.data() + data0 + offsets[10] + 8 + 8 * i, 8);
-    std::memcpy(&o, s.data() + data0 + offsets[11] + 8 + 8 * i, 8);
+  ASSERT_EQ(nb, 17u * 4);
+  for (std::int32_t i = 0; i < 17; ++i) {
+    std::int32_t c = -1, o = -1;
+    std::memcpy(&c, s.data() + data0 + offsets[10] + 8 + 4 * i, 4);
+    std::memcpy(&o, s.data() + data0 + offsets[11] + 8 + 4 * i, 4);
     EXPECT_EQ(c, i);
     EXPECT_EQ(o, i + 1);
   }
+  fs::remove_all(dir);
+}
+
+// zlib (vtkZLibDataCompressor): the arrays come back bit-equal, in blocks of 32768 bytes
+// with a partial last block (the sizes in the header checked against the array sizes).
+TEST(VtkZlib, RoundTripAndBlockHeader) {
+  const fs::path dir = temp_dir("zlib");
+  for (std::size_t n : {0u, 1u, 5000u}) {  // 5000 * 24 bytes of velocity: 4 blocks
+    const Particles<3> p = random_particles<3>(n, 7);
+    io::VtkWriteOptions zlib;
+    zlib.zlib = true;
+    io::VtkPolyData::from_particles(p).write(dir / "z.vtp", zlib);
+    expect_bit_equal(p, io::read_particles<3>(dir / "z.vtp"));
+    const std::string s = slurp(dir / "z.vtp");
+    EXPECT_NE(s.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+    // The velocity block's header: [nb][32768][last][sizes...].
+    const std::regex vel(
+        "Name=\"velocity\" NumberOfComponents=\"3\" format=\"appended\" "
+        "offset=\"([0-9]+)\"");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(s, m, vel));
+    const std::size_t at = s.find('_', s.find("<AppendedData")) + 1 + std::stoull(m[1]);
+    std::uint64_t h[3];
+    std::memcpy(h, s.data() + at, 24);
+    const std::uint64_t bytes = n * 3 * sizeof(Real);
+    EXPECT_EQ(h[0], (bytes + 32767) / 32768) << n;
+    EXPECT_EQ(h[1], 32768u);
+    EXPECT_EQ(h[2], bytes % 32768);
+  }
+  // Random doubles hardly compress, but the Verts (0, 1, 2, ...) do: the file is smaller.
+  const Particles<3> p = random_particles<3>(5000, 8);
+  io::VtkWriteOptions zlib;
+  zlib.zlib = true;
+  io::VtkPolyData::from_particles(p).write(dir / "z.vtp", zlib);
+  io::VtkPolyData::from_particles(p).write(dir / "r.vtp");
+  EXPECT_LT(fs::file_size(dir / "z.vtp"), fs::file_size(dir / "r.vtp"));
+  fs::remove_all(dir);
+}
+
+// float32: every floating point-data array narrowed to the nearest float, Points kept exact;
+// read_particles converts back. output.fields: only the named arrays.
+TEST(VtkFloat32, NarrowsFieldsKeepsPoints) {
+  const fs::path dir = temp_dir("f32");
+  const Particles<2> p = random_particles<2>(300, 9);
+  io::VtkWriteOptions f32;
+  f32.float32 = true;
+  io::VtkPolyData::from_particles(p, {"position", "velocity", "density", "id"})
+      .write(dir / "f.vtp", f32);
+  const io::VtkPolyData vtk = io::read_vtp(dir / "f.vtp");
+  ASSERT_EQ(vtk.arrays().size(), 3u);
+  EXPECT_EQ(vtk.array("velocity").type, io::VtkType::Float32);
+  EXPECT_EQ(vtk.array("density").type, io::VtkType::Float32);
+  EXPECT_EQ(vtk.array("id").type, io::VtkType::Int64);
+  EXPECT_EQ(vtk.find("pressure"), nullptr);
+  EXPECT_EQ(vtk.points().type, io::vtk_type_of<Real>());
+  const Particles<2> q = io::read_particles<2>(dir / "f.vtp");
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(q.x[i], p.x[i]);
+    EXPECT_EQ(q.rho[i], static_cast<Real>(static_cast<float>(p.rho[i])));
+    EXPECT_EQ(q.v[i][1], static_cast<Real>(static_cast<float>(p.v[i][1])));
+    EXPECT_EQ(q.id[i], p.id[i]);
+    EXPECT_EQ(q.p[i], 0);  // not written
+  }
+  EXPECT_THROW(vtk.array("id").converted<double>(), std::runtime_error);
   fs::remove_all(dir);
 }
 
@@ -200,7 +266,7 @@ TEST(VtkPvd, ListsFilesAndTimesAfterEveryOutput) {
   for (std::size_t k = 0; k < times.size(); ++k) {
     const std::string name = "particles_" + std::to_string(k) + ".vtp";
     io::write_vtp(dir / name, random_particles<2>(5, static_cast<unsigned>(k)));
-    series.add(times[k], dir / name);  // absolute path stored relative to the .pvd
+    series.add(times[k], dir / name, 0, "particles");  // absolute: stored relative to the .pvd
     series.add(times[k], "walls_" + std::to_string(k) + ".vtp", 1);
     // After every output the file on disk is complete and lists everything so far.
     const auto entries = io::PvdSeries::read(dir / "series.pvd");
@@ -209,6 +275,8 @@ TEST(VtkPvd, ListsFilesAndTimesAfterEveryOutput) {
       EXPECT_EQ(entries[2 * j].time, times[j]);
       EXPECT_EQ(entries[2 * j].file, "particles_" + std::to_string(j) + ".vtp");
       EXPECT_EQ(entries[2 * j].part, 0);
+      EXPECT_EQ(entries[2 * j].name, "particles");
+      EXPECT_EQ(entries[2 * j + 1].name, "");
       EXPECT_EQ(entries[2 * j + 1].file, "walls_" + std::to_string(j) + ".vtp");
       EXPECT_EQ(entries[2 * j + 1].part, 1);
     }

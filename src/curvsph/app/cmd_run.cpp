@@ -52,7 +52,9 @@ CLI::Validator bytes_value() {
 }
 
 const CommandRegistration reg{Command{
-    "run", "Run a case file; writes series.pvd, particles_*.vtp, probes.csv, log.txt, metrics.json",
+    "run",
+    "Run a case file; writes series.pvd, particles_*.vtp, boundary_*.vtp, probes.csv (with "
+    "probes), log.txt, metrics.json",
     [](CLI::App& sub) -> std::function<int()> {
       auto args = std::make_shared<RunArgs>();
       sub.add_option("case", args->case_file, "case file (YAML)")->required();
@@ -62,7 +64,8 @@ const CommandRegistration reg{Command{
                      "walls.1.radius=0.05); repeatable")
           ->allow_extra_args(false);
       add_threads_option(sub, args->threads);
-      sub.add_flag("--quiet,-q", args->quiet, "no progress line");
+      sub.add_flag("--quiet,-q", args->quiet,
+                   "no progress line and no set-up stage lines (warnings are still printed)");
       sub.add_option("--restart", args->restart,
                      "start from a snapshot (particles_NNNNNN.vtp) of an earlier run of the same "
                      "case, at its time in the series.pvd beside it")

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/core/particles.hpp"
 #include "curvsph/io/case_overrides.hpp"
 #include "curvsph/io/yaml_read.hpp"
 
@@ -195,6 +197,27 @@ RegionSpec read_region(const Keys& k, int dim) {
     k.fail(k.key(type), "unknown region (box | disk | ball | annulus | inside_walls)");
   }
   return r;
+}
+
+// output.fields: names of Particles fields (for_each_field); `position` is always written
+// (the points of the data set) and added when left out.
+std::vector<std::string> output_fields(const Keys& out) {
+  std::vector<std::string> known;
+  Particles<2>().for_each_field([&](const char* name, const auto&) { known.push_back(name); });
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  if (!out.has("fields"))
+    return {"position", "velocity", "pressure", "density", "mass", "phase", "id"};
+  const YAML::Node fl = out.raw("fields");
+  if (!fl.IsSequence()) out.fail(out.key("fields"), "must be a list of field names (" + list + ")");
+  std::vector<std::string> fields{"position"};
+  for (std::size_t k = 0; k < fl.size(); ++k) {
+    const std::string f = fl[k].IsScalar() ? fl[k].as<std::string>() : "";
+    if (std::find(known.begin(), known.end(), f) == known.end())
+      out.fail(out.key("fields") + "." + std::to_string(k), "'" + f + "' is not one of: " + list);
+    if (std::find(fields.begin(), fields.end(), f) == fields.end()) fields.push_back(f);
+  }
+  return fields;
 }
 
 }  // namespace
@@ -427,15 +450,14 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   }
 
   const Keys bnd = top.sub("boundary");
-  bnd.allow({"method", "map", "velocity", "shepard", "wall_particles", "wall_force", "pressure",
-             "ghost_pressure", "penetration", "wall_tension", "contact"});
+  bnd.allow({"method", "map", "velocity", "shepard", "wall_force", "pressure", "ghost_pressure",
+             "penetration", "wall_tension", "contact"});
   c.boundary.method = bnd.choice("method", {"none", "ghost", "integrals"}, "none");
   c.boundary.map =
       bnd.choice("map", {"mirror", "mirror_beta", "density_preserving"}, "mirror_beta");
   c.boundary.velocity = bnd.choice("velocity", {"no_slip", "free_slip"}, "no_slip");
   c.boundary.shepard =
       bnd.choice("shepard", {"geometric", "volume", "monolithic", "none"}, "geometric");
-  c.boundary.wall_particles = bnd.boolean("wall_particles", false);
   c.boundary.wall_force = bnd.boolean("wall_force", false);
   c.boundary.pressure =
       bnd.choice("pressure", {"symmetric", "consistent", "tensile_control"}, "symmetric");
@@ -504,10 +526,13 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
                                    : Case::HaloRule::automatic;
 
   const Keys out = top.sub("output");
-  out.allow({"every", "probe_every", "vtk"});
+  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields"});
   c.output_every = out.non_negative("every", 0.0);
   c.probe_every = out.non_negative("probe_every", 0.0);
   c.write_vtk = out.boolean("vtk", true);
+  c.output_float32 = out.choice("precision", {"float32", "float64"}, "float32") == "float32";
+  c.output_zlib = out.choice("compress", {"zlib", "none"}, "zlib") == "zlib";
+  c.output_fields = output_fields(out);
 
   const YAML::Node probes = top.raw("probes");
   if (top.has("probes") && !probes.IsSequence()) top.fail("probes", "must be a list of probes");

@@ -58,7 +58,6 @@ struct BoundarySpec {
   std::string map = "mirror_beta";
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
-  bool wall_particles = false;
   bool wall_force = false;  // repulsion closer than 0.1 dx (Calderon §3.2), both methods
   std::string pressure = "symmetric";   // integrals: symmetric | consistent | tensile_control
   std::string ghost_pressure = "copy";  // ghost: copy | hydrostatic (p_s + rho_s g.(x_g - x_s))
@@ -145,6 +144,13 @@ struct Case {
   double output_every = 0;  // 0: only first and last
   double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
+  // output.precision (float32 | float64: the particle fields' floating arrays; positions stay
+  // float64), output.compress (zlib | none) and output.fields (the Particles field names
+  // written; position always), io/vtk_writer.hpp. The default fields are what a picture and
+  // a restart need: position, velocity, pressure, density, mass, phase, id.
+  bool output_float32 = true;
+  bool output_zlib = true;
+  std::vector<std::string> output_fields;
   // parallel: MPI domain decomposition. Re-bisect when the largest rank owns more than
   // (1 + rebalance_imbalance) times the mean; check_conservation sums count, mass and ids
   // over the ranks after every migration (metrics: conservation_*).

@@ -11,14 +11,32 @@ namespace curvsph::io {
 
 PvdSeries::PvdSeries(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) {}
 
-void PvdSeries::add(double time, const std::filesystem::path& file, int part) {
+namespace {
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else if (c == '<')
+      out += "&lt;";
+    else
+      out += c;
+  }
+  return out;
+}
+}  // namespace
+
+void PvdSeries::add(double time, const std::filesystem::path& file, int part,
+                    const std::string& name) {
   std::filesystem::path rel = file;
   if (file.is_absolute()) {
     const auto dir = std::filesystem::absolute(path_).parent_path();
     const auto r = file.lexically_relative(dir);
     if (!r.empty() && *r.begin() != "..") rel = r;
   }
-  entries_.push_back({time, rel.generic_string(), part});
+  entries_.push_back({time, rel.generic_string(), part, name});
   rewrite();
 }
 
@@ -28,19 +46,10 @@ void PvdSeries::rewrite() const {
       << "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
       << "  <Collection>\n";
   for (const auto& e : entries_) {
-    std::string file;
-    for (char c : e.file) {
-      if (c == '&')
-        file += "&amp;";
-      else if (c == '"')
-        file += "&quot;";
-      else if (c == '<')
-        file += "&lt;";
-      else
-        file += c;
-    }
-    xml << fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"{}\" file=\"{}\"/>\n",
-                       e.time, e.part, file);
+    // ParaView's PVD reader names a block after the DataSet's `name` attribute.
+    const std::string name = e.name.empty() ? "" : " name=\"" + escaped(e.name) + "\"";
+    xml << fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"{}\"{} file=\"{}\"/>\n",
+                       e.time, e.part, name, escaped(e.file));
   }
   xml << "  </Collection>\n</VTKFile>\n";
 
@@ -84,8 +93,8 @@ std::vector<PvdSeries::Entry> PvdSeries::read(const std::filesystem::path& pvd_p
        pos = text.find("<DataSet", pos + 1)) {
     const std::string tag = text.substr(pos, text.find('>', pos) - pos);
     const std::string part = attr(tag, "part");
-    out.push_back(
-        {std::stod(attr(tag, "timestep")), attr(tag, "file"), part.empty() ? 0 : std::stoi(part)});
+    out.push_back({std::stod(attr(tag, "timestep")), attr(tag, "file"),
+                   part.empty() ? 0 : std::stoi(part), attr(tag, "name")});
   }
   return out;
 }

@@ -11,8 +11,9 @@
 namespace curvsph::io {
 
 // `layout` gives the array names, types and component counts (any one piece);
-// `pieces` are file names relative to the .pvtp's directory.
+// `pieces` are file names relative to the .pvtp's directory; `options` those the pieces
+// were written with (a Float64 array written as Float32 is declared Float32).
 void write_pvtp(const std::filesystem::path& path, const VtkPolyData& layout,
-                const std::vector<std::string>& pieces);
+                const std::vector<std::string>& pieces, const VtkWriteOptions& options = {});
 
 }  // namespace curvsph::io

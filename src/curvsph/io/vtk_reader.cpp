@@ -1,5 +1,7 @@
 #include "curvsph/io/vtk_reader.hpp"
 
+#include <zlib.h>
+
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -50,6 +52,51 @@ std::map<std::string, std::string> attributes(const std::string& tag) {
   return out;
 }
 
+std::uint64_t u64_at(const std::string& file, std::size_t at) {
+  std::uint64_t v = 0;
+  for (int k = 7; k >= 0; --k)
+    v = (v << 8) | static_cast<unsigned char>(file[at + static_cast<std::size_t>(k)]);
+  return v;
+}
+
+// [UInt64 n][n bytes].
+template <class Fail>
+std::vector<std::byte> raw_block(const std::string& file, std::size_t at, const Fail& fail) {
+  if (at + 8 > file.size()) fail("appended data truncated");
+  const std::uint64_t nbytes = u64_at(file, at);
+  if (nbytes > file.size() - at - 8) fail("appended data truncated");
+  std::vector<std::byte> out(nbytes);
+  if (nbytes) std::memcpy(out.data(), file.data() + at + 8, nbytes);
+  return out;
+}
+
+// vtkZLibDataCompressor: [nblocks][block size][last block size, 0: full][compressed sizes]
+// then the zlib streams (vtk_writer.hpp).
+template <class Fail>
+std::vector<std::byte> inflate_block(const std::string& file, std::size_t at, const Fail& fail) {
+  if (at + 24 > file.size()) fail("appended data truncated");
+  const std::uint64_t nb = u64_at(file, at), bs = u64_at(file, at + 8),
+                      last = u64_at(file, at + 16);
+  if (nb > (file.size() - at - 24) / 8) fail("compressed block header truncated");
+  std::size_t src = at + 24 + 8 * nb;
+  std::vector<std::byte> out;
+  for (std::uint64_t b = 0; b < nb; ++b) {
+    const std::uint64_t cs = u64_at(file, at + 24 + 8 * b);
+    const std::uint64_t us = (b + 1 == nb && last != 0) ? last : bs;
+    if (cs > file.size() - src) fail("compressed data truncated");
+    const std::size_t o = out.size();
+    out.resize(o + us);
+    uLongf len = static_cast<uLongf>(us);
+    if (uncompress(reinterpret_cast<Bytef*>(out.data() + o), &len,
+                   reinterpret_cast<const Bytef*>(file.data() + src),
+                   static_cast<uLong>(cs)) != Z_OK ||
+        len != us)
+      fail("corrupt zlib block");
+    src += cs;
+  }
+  return out;
+}
+
 }  // namespace
 
 VtkPolyData read_vtp(const std::filesystem::path& path) {
@@ -61,6 +108,7 @@ VtkPolyData read_vtp(const std::filesystem::path& path) {
   };
 
   const std::size_t appended = file.find("<AppendedData");
+  bool zlib = false;
   if (file.find("<VTKFile") == std::string::npos ||
       file.find("type=\"PolyData\"") == std::string::npos)
     fail("not a VTK PolyData file");
@@ -71,6 +119,11 @@ VtkPolyData read_vtp(const std::filesystem::path& path) {
     const auto head = attributes(file.substr(vtk, file.find('>', vtk) - vtk));
     if (head.count("header_type") && head.at("header_type") != "UInt64")
       fail("header_type must be UInt64");
+    if (head.count("compressor")) {
+      if (head.at("compressor") != "vtkZLibDataCompressor")
+        fail("compressor '" + head.at("compressor") + "' is not read (vtkZLibDataCompressor is)");
+      zlib = true;
+    }
     if (head.count("byte_order") && head.at("byte_order") != "LittleEndian")
       fail("byte_order must be LittleEndian");
     const std::size_t a = file.find('>', appended);
@@ -117,12 +170,8 @@ VtkPolyData read_vtp(const std::filesystem::path& path) {
     a.components =
         attrs.count("NumberOfComponents") ? std::stoi(attrs.at("NumberOfComponents")) : 1;
     const std::size_t offset = std::stoull(attrs.at("offset"));
-    if (data0 + offset + 8 > file.size()) fail("appended data truncated");
-    std::uint64_t nbytes = 0;
-    std::memcpy(&nbytes, file.data() + data0 + offset, 8);
-    if (data0 + offset + 8 + nbytes > file.size()) fail("appended data truncated");
-    a.bytes.resize(nbytes);
-    std::memcpy(a.bytes.data(), file.data() + data0 + offset + 8, nbytes);
+    a.bytes =
+        zlib ? inflate_block(file, data0 + offset, fail) : raw_block(file, data0 + offset, fail);
     if (section == "Points") {
       out.set_points_array(std::move(a));
     } else if (section == "PointData") {

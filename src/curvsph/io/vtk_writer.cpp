@@ -1,5 +1,7 @@
 #include "curvsph/io/vtk_writer.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <bit>
 #include <fstream>
@@ -24,6 +26,10 @@ const char* vtk_type_name(VtkType t) {
       return "Float64";
   }
   return "?";
+}
+
+bool vtk_type_is_float(VtkType t) {
+  return t == VtkType::Float32 || t == VtkType::Float64;
 }
 
 std::size_t vtk_type_size(VtkType t) {
@@ -100,25 +106,72 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
-// Appends one block (UInt64 byte count + data) to the appended section, little-endian.
-void append_block(std::string& blob, const std::vector<std::byte>& bytes, std::size_t word) {
-  std::uint64_t n = bytes.size();
-  std::vector<std::byte> header(sizeof(n));
-  std::memcpy(header.data(), &n, sizeof(n));
+// Little-endian copy of an array's bytes (words of `word` bytes).
+std::vector<std::byte> little_endian(const std::vector<std::byte>& bytes, std::size_t word) {
+  std::vector<std::byte> out = bytes;
   if constexpr (std::endian::native == std::endian::big) {
-    std::reverse(header.begin(), header.end());
-  }
-  blob.append(reinterpret_cast<const char*>(header.data()), header.size());
-  const std::size_t start = blob.size();
-  blob.append(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  if constexpr (std::endian::native == std::endian::big) {
-    for (std::size_t i = start; i + word <= blob.size(); i += word)
-      std::reverse(blob.begin() + static_cast<std::ptrdiff_t>(i),
-                   blob.begin() + static_cast<std::ptrdiff_t>(i + word));
+    for (std::size_t i = 0; i + word <= out.size(); i += word)
+      std::reverse(out.begin() + static_cast<std::ptrdiff_t>(i),
+                   out.begin() + static_cast<std::ptrdiff_t>(i + word));
   } else {
     (void)word;
-    (void)start;
   }
+  return out;
+}
+
+void append_u64(std::string& blob, std::uint64_t v) {
+  for (int k = 0; k < 8; ++k) blob.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
+}
+
+// vtkZLibDataCompressor splits an array into blocks of this many uncompressed bytes (VTK's
+// own default) and compresses each on its own, so the blocks are compressed in parallel.
+constexpr std::size_t kZlibBlock = 32768;
+// zlib level 1: on the 10^5-particle snapshots of README (Outputs) the float32 data
+// compress to within 0.2 % of level 6's size in a third to a half of its time.
+constexpr int kZlibLevel = 1;
+
+// Appends one array: [UInt64 n][n bytes] raw, or the compressed layout of the file header.
+void append_block(std::string& blob, const std::vector<std::byte>& le, bool zlib) {
+  if (!zlib) {
+    append_u64(blob, le.size());
+    blob.append(reinterpret_cast<const char*>(le.data()), le.size());
+    return;
+  }
+  const std::size_t nb = (le.size() + kZlibBlock - 1) / kZlibBlock;
+  std::vector<std::vector<unsigned char>> out(nb);
+  bool ok = true;
+#pragma omp parallel for schedule(dynamic) reduction(&& : ok)
+  for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(nb); ++b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kZlibBlock;
+    const std::size_t len = std::min(kZlibBlock, le.size() - begin);
+    auto& o = out[static_cast<std::size_t>(b)];
+    uLongf dest = compressBound(static_cast<uLong>(len));
+    o.resize(dest);
+    ok = ok && compress2(o.data(), &dest, reinterpret_cast<const Bytef*>(le.data() + begin),
+                         static_cast<uLong>(len), kZlibLevel) == Z_OK;
+    o.resize(dest);
+  }
+  if (!ok) throw std::runtime_error("zlib compression failed");
+  append_u64(blob, nb);
+  append_u64(blob, kZlibBlock);
+  append_u64(blob, le.size() % kZlibBlock);  // 0: the last block is full
+  for (const auto& o : out) append_u64(blob, o.size());
+  for (const auto& o : out) blob.append(reinterpret_cast<const char*>(o.data()), o.size());
+}
+
+// The array as written: Float64 narrowed to Float32 when asked.
+VtkArray narrowed(const VtkArray& a) {
+  if (a.type != VtkType::Float64) return a;
+  VtkArray out{a.name, VtkType::Float32, a.components, {}};
+  const std::size_t n = a.bytes.size() / 8;
+  out.bytes.resize(n * 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    double d;
+    std::memcpy(&d, a.bytes.data() + 8 * i, 8);
+    const float f = static_cast<float>(d);
+    std::memcpy(out.bytes.data() + 4 * i, &f, 4);
+  }
+  return out;
 }
 
 void data_array_tag(std::ostringstream& xml, const VtkArray& a, std::size_t offset,
@@ -131,7 +184,7 @@ void data_array_tag(std::ostringstream& xml, const VtkArray& a, std::size_t offs
 
 }  // namespace
 
-void VtkPolyData::write(const std::filesystem::path& path) const {
+void VtkPolyData::write(const std::filesystem::path& path, const VtkWriteOptions& options) const {
   const std::size_t n = number_of_points();
   if (points_.bytes.size() != n * 3 * vtk_type_size(points_.type))
     throw std::runtime_error("VTK points array is not a whole number of 3-component tuples");
@@ -141,31 +194,41 @@ void VtkPolyData::write(const std::filesystem::path& path) const {
                                " tuples, expected " + std::to_string(n));
   }
 
-  // Verts: one vertex per point.
-  VtkArray connectivity{"connectivity", VtkType::Int64, 1, {}};
-  VtkArray offsets{"offsets", VtkType::Int64, 1, {}};
-  connectivity.bytes.resize(n * sizeof(std::int64_t));
-  offsets.bytes.resize(n * sizeof(std::int64_t));
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::int64_t c = static_cast<std::int64_t>(i), o = c + 1;
-    std::memcpy(connectivity.bytes.data() + i * 8, &c, 8);
-    std::memcpy(offsets.bytes.data() + i * 8, &o, 8);
-  }
+  // Verts: one vertex per point; Int32 indices while they fit (8 bytes per point less).
+  const bool wide = n >= (std::size_t(1) << 31) - 1;
+  const VtkType index_type = wide ? VtkType::Int64 : VtkType::Int32;
+  VtkArray connectivity{"connectivity", index_type, 1, {}};
+  VtkArray offsets{"offsets", index_type, 1, {}};
+  auto fill = [&](auto zero) {
+    using I = decltype(zero);
+    connectivity.bytes.resize(n * sizeof(I));
+    offsets.bytes.resize(n * sizeof(I));
+    for (std::size_t i = 0; i < n; ++i) {
+      const I c = static_cast<I>(i), o = static_cast<I>(c + 1);
+      std::memcpy(connectivity.bytes.data() + i * sizeof(I), &c, sizeof(I));
+      std::memcpy(offsets.bytes.data() + i * sizeof(I), &o, sizeof(I));
+    }
+  };
+  if (wide)
+    fill(std::int64_t{});
+  else
+    fill(std::int32_t{});
 
   std::string blob;
   std::ostringstream xml;
   xml << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n"
+         "header_type=\"UInt64\""
+      << (options.zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
       << "  <PolyData>\n"
       << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
   auto emit = [&](const VtkArray& a, const char* indent) {
     data_array_tag(xml, a, blob.size(), indent);
-    append_block(blob, a.bytes, vtk_type_size(a.type));
+    append_block(blob, little_endian(a.bytes, vtk_type_size(a.type)), options.zlib);
   };
   xml << "      <PointData>\n";
-  for (const auto& a : arrays_) emit(a, "        ");
+  for (const auto& a : arrays_) emit(options.float32 ? narrowed(a) : a, "        ");
   xml << "      </PointData>\n      <Points>\n";
   emit(points_, "        ");
   xml << "      </Points>\n      <Verts>\n";

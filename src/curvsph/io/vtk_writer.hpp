@@ -1,10 +1,16 @@
 #pragma once
 // VTK XML PolyData (.vtp) output for ParaView, binary appended format:
 //   <AppendedData encoding="raw">_ [UInt64 byte count][raw little-endian bytes] ...
-// One vertex per point (Verts with connectivity/offsets). Points are always written with
-// three components (z = 0 in 2-D). VtkPolyData is a small builder: set the points, add
-// named scalar / vector / integer arrays, write(path). from_particles() fills it with every
-// field of Particles<D> (for_each_field), so a new field appears in the output by itself.
+// or, with VtkWriteOptions::zlib, VTK's vtkZLibDataCompressor layout per array:
+//   [UInt64 nblocks][UInt64 block size][UInt64 last block size, 0: full]
+//   [UInt64 compressed size of each block] [the zlib streams of the blocks]
+// (the layout vtkXMLDataParser reads; every block is compressed on its own). One vertex per
+// point (Verts with connectivity/offsets, Int32 below 2^31 points). Points are always written
+// with three components (z = 0 in 2-D). VtkPolyData is a small builder: set the points, add
+// named scalar / vector / integer arrays, write(path). from_particles() fills it with the
+// fields of Particles<D> (for_each_field, all or a chosen list), so a new field appears in the
+// output by itself.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +29,7 @@ namespace curvsph::io {
 enum class VtkType { Int8, UInt8, Int32, Int64, Float32, Float64 };
 
 const char* vtk_type_name(VtkType t);
+bool vtk_type_is_float(VtkType t);
 std::size_t vtk_type_size(VtkType t);
 VtkType vtk_type_from_name(const std::string& name);  // throws std::runtime_error if unknown
 
@@ -44,6 +51,16 @@ constexpr VtkType vtk_type_of() {
     static_assert(sizeof(T) == 0, "unsupported VTK element type");
 }
 
+// How write() encodes the arrays (the case keys output.precision and output.compress).
+struct VtkWriteOptions {
+  // Float64 point-data arrays written as Float32 (halves them; 7 significant digits are
+  // what a picture or a profile needs). Points keep their own type: positions stay as exact
+  // as the run, so that distances to a wall and a restart's neighbour sums are unchanged.
+  bool float32 = false;
+  // vtkZLibDataCompressor on every array (ParaView and VTK's readers decompress it).
+  bool zlib = false;
+};
+
 // One named data array: `components` values per point, stored as native bytes.
 struct VtkArray {
   std::string name;
@@ -57,6 +74,10 @@ struct VtkArray {
   // Copy out as T (must match `type` exactly; throws otherwise).
   template <class T>
   std::vector<T> as() const;
+  // Copy out converted to T from any floating type (T floating) or any integer type (T
+  // integral); throws for a float array read as integers or the other way round.
+  template <class T>
+  std::vector<T> converted() const;
 };
 
 class VtkPolyData {
@@ -88,9 +109,11 @@ class VtkPolyData {
   void add_field(const std::string& name, const std::vector<T>& values);
   void add_array(VtkArray array);
 
-  // Every field of `p` as PointData, positions as Points.
+  // The fields of `p` named in `fields` (every field when empty) as PointData, positions as
+  // Points (always).
   template <int D>
-  static VtkPolyData from_particles(const Particles<D>& p);
+  static VtkPolyData from_particles(const Particles<D>& p,
+                                    const std::vector<std::string>& fields = {});
 
   std::size_t number_of_points() const { return points_.tuples(); }
   const VtkArray& points() const { return points_; }
@@ -100,7 +123,7 @@ class VtkPolyData {
 
   // Writes the .vtp file (creates parent directories). Throws std::runtime_error on I/O errors
   // or inconsistent array sizes.
-  void write(const std::filesystem::path& path) const;
+  void write(const std::filesystem::path& path, const VtkWriteOptions& options = {}) const;
 
   // Internal use by the reader.
   void set_points_array(VtkArray a) { points_ = std::move(a); }
@@ -181,12 +204,53 @@ void VtkPolyData::add_field(const std::string& name, const std::vector<T>& value
   }
 }
 
+template <class T>
+std::vector<T> VtkArray::converted() const {
+  if (vtk_type_of<T>() == type) return as<T>();
+  if (std::is_floating_point_v<T> != vtk_type_is_float(type))
+    throw std::runtime_error("VTK array '" + name + "' has type " + vtk_type_name(type) +
+                             ", not convertible to " + vtk_type_name(vtk_type_of<T>()));
+  const std::size_t n = bytes.size() / vtk_type_size(type);
+  std::vector<T> out(n);
+  auto copy = [&](auto zero) {
+    using S = decltype(zero);
+    for (std::size_t i = 0; i < n; ++i) {
+      S v;
+      std::memcpy(&v, bytes.data() + i * sizeof(S), sizeof(S));
+      out[i] = static_cast<T>(v);
+    }
+  };
+  switch (type) {
+    case VtkType::Int8:
+      copy(std::int8_t{});
+      break;
+    case VtkType::UInt8:
+      copy(std::uint8_t{});
+      break;
+    case VtkType::Int32:
+      copy(std::int32_t{});
+      break;
+    case VtkType::Int64:
+      copy(std::int64_t{});
+      break;
+    case VtkType::Float32:
+      copy(float{});
+      break;
+    case VtkType::Float64:
+      copy(double{});
+      break;
+  }
+  return out;
+}
+
 template <int D>
-VtkPolyData VtkPolyData::from_particles(const Particles<D>& p) {
+VtkPolyData VtkPolyData::from_particles(const Particles<D>& p,
+                                        const std::vector<std::string>& fields) {
   VtkPolyData out;
   out.set_points(p.x);
   p.for_each_field([&](const char* name, const auto& data) {
     if (std::string(name) == "position") return;  // written as Points
+    if (!fields.empty() && std::find(fields.begin(), fields.end(), name) == fields.end()) return;
     out.add_field(name, data);
   });
   return out;

@@ -1,10 +1,13 @@
 #include "curvsph/setup/relax.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "curvsph/core/parallel.hpp"
+#include "curvsph/core/stage_report.hpp"
 
 namespace curvsph {
 
@@ -59,6 +62,7 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
   const Real cap = static_cast<Real>(opt.max_shift) * dx;
   const double clearance = opt.wall_clearance * opt.dx;
 
+  StageReport report("packing");
   for (long step = 0;; ++step) {
     cells.build(x);
     if (!walls.empty()) {
@@ -89,8 +93,14 @@ RelaxResult relax_particles(std::vector<Vec<D>>& x, const WallSet<D>& walls, Cel
     res.steps = step;
     if (spread < opt.tolerance || step >= opt.max_steps) {
       res.node_density = nd;
+      report.result(
+          fmt::format("{} steps, spread {:.3g} (tolerance {:.3g})", step, spread, opt.tolerance));
       break;
     }
+    report.tick([&] {
+      return fmt::format("step {}/{}, node-density spread {:.3g} -> {:.3g}", step, opt.max_steps,
+                         spread, opt.tolerance);
+    });
     double mean = 0;
     for (Real v : nd) mean += v;
     mean /= std::max<Index>(n, 1);

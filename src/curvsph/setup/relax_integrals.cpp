@@ -1,11 +1,14 @@
 #include "curvsph/setup/relax_integrals.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/parallel.hpp"
+#include "curvsph/core/stage_report.hpp"
 
 namespace curvsph {
 
@@ -70,13 +73,22 @@ RelaxResult relax_particles_integrals(std::vector<Vec<D>>& x, const Wall<D>& clo
   const double clearance = opt.wall_clearance * opt.dx;
   std::vector<Vec<D>> R;
   const Index n = static_cast<Index>(x.size());
+  StageReport report("packing (integrals)");
   for (long step = 0;; ++step) {
     cells.build(x);
     const double r = integrals_residual<D>(x, cells, ex, en, ea, wq, elem_cells, W, volume, R);
     if (step == 0) res.spread_initial = r;
     res.spread = r;
     res.steps = step;
-    if (r < opt.tolerance || step >= opt.max_steps) break;
+    if (r < opt.tolerance || step >= opt.max_steps) {
+      report.result(
+          fmt::format("{} steps, residual {:.3g} (tolerance {:.3g})", step, r, opt.tolerance));
+      break;
+    }
+    report.tick([&] {
+      return fmt::format("step {}/{}, BI residual {:.3g} -> {:.3g}", step, opt.max_steps, r,
+                         opt.tolerance);
+    });
     parallel_for(n, [&](Index i) {
       pack_move<D>(x[i], -f * R[i], cap);
       keep_clear_of<D>(x[i], closure, clearance);

@@ -10,15 +10,15 @@
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/integrals/element_quadrature.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/core/stage_report.hpp"
 #include "curvsph/core/threads.hpp"
 #include "curvsph/io/probes.hpp"
 #include "curvsph/io/pvd_series.hpp"
-#include "curvsph/io/pvtp.hpp"
 #include "curvsph/io/vtk_reader.hpp"
-#include "curvsph/io/vtk_writer.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
 #include "curvsph/solver/run_guards.hpp"
+#include "curvsph/solver/snapshot_writer.hpp"
 #include "curvsph/solver/solver.hpp"
 #include "curvsph/solver/stop_signal.hpp"
 
@@ -35,6 +35,28 @@ double snapshot_time(const fs::path& vtp) {
     if (fs::path(e.file).filename() == vtp.filename()) return e.time;
   throw std::runtime_error("restart: '" + vtp.filename().string() + "' is not listed in '" +
                            pvd.string() + "'");
+}
+
+// The state a restart continues from. Positions, velocities, masses and densities are the
+// scheme's state (accelerations, rates, pressures and number densities are recomputed by the
+// first step), and with several fluids the phase; a snapshot whose output.fields left one out
+// cannot continue the run and is refused (exit 2). Without ids the particles are numbered in
+// file order.
+template <int D>
+Particles<D> read_restart(const fs::path& vtp, const Case& c) {
+  const io::VtkPolyData vtk = io::read_vtp(vtp);
+  std::vector<std::string> need{"velocity", "mass", "density"};
+  if (c.fluids.size() > 1) need.push_back("phase");
+  for (const auto& f : need)
+    if (!vtk.find(f))
+      throw InputError(vtp.string(), "",
+                       "the snapshot has no '" + f +
+                           "' array; a restart needs position, velocity, mass and density (and "
+                           "phase with several fluids): write them with output.fields");
+  Particles<D> p = io::particles_from_vtk<D>(vtk);
+  if (!vtk.find("id"))
+    for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
+  return p;
 }
 
 // Writes to log.txt (when files are written) and nowhere else: stderr belongs to progress.
@@ -84,15 +106,6 @@ void add_decomposition_metrics(const Decomposition<D>& dec, nlohmann::json& m) {
   }
 }
 
-// The owned particles of this rank (the solver's arrays may carry halo copies behind them).
-template <int D>
-Particles<D> owned_part(const Solver<D>& s) {
-  Particles<D> p = s.particles();
-  const auto n = static_cast<std::size_t>(s.decomposition().owned());
-  p.for_each_field([&](const char*, auto& data) { data.resize(n); });
-  return p;
-}
-
 template <int D>
 nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // Capped at the processors available (core/threads.hpp; `run` warns).
@@ -118,6 +131,11 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // stops every rank with the same message before the first collective step.
   std::unique_ptr<Solver<D>> solver_ptr;
   std::vector<std::unique_ptr<Analysis<D>>> analyses;
+  // Set-up stages longer than ~2 s say so (core/stage_report.hpp), as the progress line does.
+  struct StageReports {
+    explicit StageReports(bool on) { set_stage_reports(on); }
+    ~StageReports() { set_stage_reports(false); }
+  } stage_reports_on(o.progress && comm.root());
   mpi::agree_on_input(comm, [&] {
     solver_ptr = std::make_unique<Solver<D>>(c);
     if (const YAML::Node an = c.root["analysis"]; an && an.IsMap())
@@ -127,53 +145,18 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   Solver<D>& solver = *solver_ptr;
   if (!o.restart.empty()) {
     const double t0 = snapshot_time(o.restart);
-    solver.restart(io::read_particles<D>(o.restart), t0);
+    solver.restart(read_restart<D>(o.restart, c), t0);
     log("restart from {} at t = {:.6g}", o.restart.string(), t0);
   }
 
-  io::PvdSeries series(o.out_dir / "series.pvd");
-  int snapshot = 0;
   // A named snapshot (the state of an unstable run) is written even with output.vtk off:
   // DESIGN.md §3 promises an unstable run's last VTK snapshot, and studies that turn the
   // periodic output off are where a blow-up is otherwise left without one.
+  SnapshotWriter<D> snapshots(c, o.out_dir, comm);
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || (!c.write_vtk && name.empty())) return;
     const auto t0 = std::chrono::steady_clock::now();
-    const int index = snapshot;
-    const std::string file = name.empty() ? fmt::format("particles_{:06d}.vtp", snapshot++) : name;
-    // One block: the .vtp on one rank; with MPI a .pvtp naming one .vtp per rank.
-    auto write_block = [&](const io::VtkPolyData& poly, const std::string& f, int part) {
-      if (!parallel) {
-        poly.write(o.out_dir / f);
-        series.add(solver.time(), f, part);
-        return;
-      }
-      const std::string stem = fs::path(f).stem().string();
-      poly.write(o.out_dir / fmt::format("{}_r{}.vtp", stem, comm.rank()));
-      if (!comm.root()) return;
-      std::vector<std::string> pieces;
-      for (int r = 0; r < comm.size(); ++r) pieces.push_back(fmt::format("{}_r{}.vtp", stem, r));
-      io::write_pvtp(o.out_dir / (stem + ".pvtp"), poly, pieces);
-      series.add(solver.time(), stem + ".pvtp", part);
-    };
-    write_block(io::VtkPolyData::from_particles(parallel ? owned_part(solver) : solver.particles()),
-                file, 0);
-    // Ghosts / wall elements as a second block of the series (kind: 1 ghost, 2 element).
-    // With MPI a rank's piece also holds the ghosts of its halo copies.
-    if (const auto* b = solver.boundary()) {
-      std::vector<Vec<D>> bx;
-      std::vector<int> kind;
-      b->append_output(bx, kind);
-      const bool any = parallel ? comm.sum(static_cast<std::int64_t>(bx.size())) > 0 : !bx.empty();
-      if (any) {
-        io::VtkPolyData poly;
-        poly.set_points(bx);
-        poly.add_scalar("kind", std::vector<std::int32_t>(kind.begin(), kind.end()));
-        const std::string bfile =
-            name.empty() ? fmt::format("boundary_{:06d}.vtp", index) : "boundary_" + name;
-        write_block(poly, bfile, 1);
-      }
-    }
+    snapshots.write(solver, name);
     solver.phase_times().output +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
@@ -215,7 +198,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     log("relaxation: {} steps in {:.2f} s, {} {:.4g} -> {:.4g} (tolerance {})", rr->steps,
         rr->seconds, relax_figure, rr->spread_initial, rr->spread, c.relax.tolerance);
   if (const auto& rr = solver.relax_result(); rr && c.relax.max_steps > 0 &&
-                                              rr->spread > c.relax.tolerance && o.progress &&
+                                              rr->spread > c.relax.tolerance && o.warnings &&
                                               comm.root() && o.restart.empty()) {
     // (max_steps = 0 asks for no packing: a case switching its packing off says so.)
     // An unconverged packing starts the run off the scheme's equilibrium where it stopped
@@ -232,7 +215,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         de->max, de->local, de->local_above_1pct);
     // A local error above 2 % starts the run with pressure waves of a few per cent of
     // rho0 c0^2, as large as the flow's own (c0 is chosen for ~1 % density variation).
-    if (de->local > 0.02 && o.progress && comm.root() && o.restart.empty()) {
+    if (de->local > 0.02 && o.warnings && comm.root() && o.restart.empty()) {
       // The plain mirror at a curved wall is the usual cause (Barker §2: its ghosts stand for
       // the wrong volume); say so where it applies.
       const bool mirror = c.boundary.method == "ghost" && c.boundary.map == "mirror";
@@ -324,7 +307,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         observe();
         log("t = {:.6g}, step {}, dt = {:.4g}", tn, solver.steps(), solver.dt());
       }
-      progress.update(solver.steps(), tn, solver.dt());
+      progress.update(solver.steps(), tn, solver.stable_step());
     }
   } catch (const InstabilityError& e) {
     progress.finish();
@@ -363,7 +346,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     log("the run stops at t = {:.6g}; the analyses record the event", solver.time());
   }
   if (!unstable) {
-    progress.update(solver.steps(), solver.time(), solver.dt(), true);
+    progress.update(solver.steps(), solver.time(), solver.stable_step(), true);
     progress.finish();
   }
   // The last state is observed once: compare with the last observation, not the last

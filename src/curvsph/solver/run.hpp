@@ -11,7 +11,8 @@ namespace curvsph {
 struct RunOptions {
   std::filesystem::path out_dir = "out";
   int threads = 0;          // 0: OpenMP default
-  bool progress = true;     // progress line on stderr
+  bool progress = true;     // progress line and set-up stage lines on stderr (rank 0)
+  bool warnings = true;     // warnings on stderr (rank 0), whatever `progress` says
   bool write_files = true;  // false: no VTK/probes/log (validation sweeps); metrics still returned
   // A snapshot (.vtp) of an earlier run of the same case to start from instead of the case's
   // initial particles; its time is read from the series.pvd beside it. Empty: start at t = 0.

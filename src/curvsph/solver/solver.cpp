@@ -10,6 +10,7 @@
 #include "curvsph/analysis/analysis.hpp"
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/core/stage_report.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/parallel/agree.hpp"
@@ -40,7 +41,11 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   if (c.root["walls"] && c.root["walls"].IsSequence())
     walls_ = parse_walls<D>(c.root["walls"], c.file_name(), c.file.parent_path());
   contact_angles_ = parse_contact_angles<D>(c.root["walls"], c.file_name(), c.file.parent_path());
-  generate_particles<D>(c, P_, walls_);
+  {
+    StageReport report("particle fill");
+    generate_particles<D>(c, P_, walls_);
+    report.result(fmt::format("{} particles", P_.size()));
+  }
   for (const auto& f : c.fluids) {
     F_.rho0.push_back(static_cast<Real>(f.rho0));
     F_.viscosity.push_back(static_cast<Real>(f.viscosity));
@@ -111,7 +116,10 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   }
 
   if (!c.initial_field.empty()) apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
-  boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
+  {
+    StageReport report("boundary set-up (" + c.boundary.method + ")");
+    boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
+  }
   if (boundary_) boundary_->check_setup(P_, c.file_name());
 
   // [mpi] The halo reaches as far as any pass reads neighbours (kernel support, more where
@@ -476,6 +484,7 @@ void Solver<D>::step(Real dt_cap) {
   if (steps_ > 0 && steps_ % kResortEvery == 0) resort();
   const Real stable = stable_dt();
   check_dt(stable, std::min(stable, dt_cap));
+  stable_step_ = stable;
   dt_ = std::min(stable, dt_cap);
   const Real half = dt_ / 2;
   const Index n = static_cast<Index>(P_.size());

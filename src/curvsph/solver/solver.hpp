@@ -50,6 +50,9 @@ class Solver {
 
   double time() const { return t_; }
   Real dt() const { return dt_; }
+  // The step the stability limits gave at the last step(), before the cap that lands on an
+  // output time (what a progress line shows: the cut step looks like a collapse).
+  Real stable_step() const { return stable_step_; }
   long steps() const { return steps_; }
   Particles<D>& particles() { return P_; }
   const Particles<D>& particles() const { return P_; }
@@ -149,6 +152,7 @@ class Solver {
   // land on an output time then never gets there.
   double t_ = 0;
   Real dt_ = 0;
+  Real stable_step_ = 0;
   long steps_ = 0;
   Real nu_max_ = 0;
   PhaseTimes times_;

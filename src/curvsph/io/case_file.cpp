@@ -467,7 +467,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.boundary.ghost_pressure = bnd.choice("ghost_pressure", {"copy", "hydrostatic"},
                                          c.free_surface_defaults ? "hydrostatic" : "copy");
   c.boundary.penetration_stop = bnd.choice("penetration", {"project", "stop"}, "project") == "stop";
-  c.boundary.wall_tension = bnd.boolean("wall_tension", !c.free_surface_defaults);
+  c.boundary.wall_tension = bnd.boolean("wall_tension", true);
   c.boundary.contact = bnd.non_negative("contact", 0.1);
   if (c.boundary.contact >= 0.5)
     bnd.fail(bnd.key("contact"),

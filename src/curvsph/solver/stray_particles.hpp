@@ -7,12 +7,16 @@
 //  - a particle that comes closer to a wall than boundary.contact (a fraction of dx, default
 //    0.1: Calderon et al.'s d0 of the wall force) is stopped there: put on that distance along
 //    the wall normal with its normal velocity towards the wall removed, and counted
-//    (wall_contacts). The wall terms of both boundary families give no normal force on a
-//    particle at the wall itself (ghosts: its own ghost coincides with it and the rest of the
-//    image is the mirror of the fluid; integrals: the element terms vanish with the kernel
-//    average's gradient), so a particle driven onto the wall by an impact or a sliding flow
-//    is not pushed back before it crosses; this contact is the kinematic condition u.n = u_w.n
-//    applied at d0 rather than at the wall;
+//    (wall_contacts). Neither boundary family stiffens as a particle nears the wall: with
+//    ghosts, a particle on the wall coincides with its own ghost and the rest of the image is
+//    the mirror of its neighbourhood, so the normal pressure force vanishes there by symmetry
+//    (only a compression of the whole near-wall layer pushes back); with boundary integrals
+//    the restoring stiffness below a free surface is C p_i/(rho0 h^2) with C = 1.44, 0.79,
+//    0.50 at h/dx = 2, 3, 4 (docs/validation/hydrostatic_tank/findings.md), and a particle in
+//    tension has none. An impact or a fast flow along a wall drives particles onto it, and
+//    without the contact they cross (column on a cylinder, mirror_beta, dx = 0.01: 996 of
+//    2400 particles put back from past a wall over 1.5 s). The contact is the kinematic
+//    condition u.n = u_w.n, applied at d0 rather than at the wall;
 //  - a particle found past a wall (signed distance <= 0; with contact on, only one that
 //    crossed in a single step) is put back the same way and counted (particles_projected;
 //    boundary.penetration: project), or stops the run (penetration: stop);

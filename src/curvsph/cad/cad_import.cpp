@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <map>
 
+#include "curvsph/cad/cad_solid_wall.hpp"
 #include "curvsph/cad/stl_reader.hpp"
 #include "curvsph/cad/trimmed_face_wall.hpp"
 #include "curvsph/core/error.hpp"
@@ -158,6 +159,16 @@ std::vector<WallPtr<3>> faces_to_walls(const TopoDS_Shape& shape, FluidSide side
   return walls;
 }
 
+WallPtr<3> make_solid_wall(const TopoDS_Shape& shape, const std::vector<WallPtr<3>>& faces,
+                           FluidSide side, double scale, const std::string& label) {
+  std::vector<std::shared_ptr<const TrimmedFaceWall>> tf;
+  for (const auto& w : faces) tf.push_back(std::dynamic_pointer_cast<const TrimmedFaceWall>(w));
+  return std::make_shared<CadSolidWall>(
+      shape, std::move(tf),
+      side == FluidSide::inside ? curvsph::FluidSide::inside : curvsph::FluidSide::outside, scale,
+      label);
+}
+
 std::string describe_shape(const TopoDS_Shape& shape) {
   std::map<std::string, int> count;
   int n = 0;
@@ -206,6 +217,10 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
   const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
   std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
   if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
+  // A closed shell (all its faces kept) is one wall: the side of a point is then a property of
+  // the solid, not of whichever face is nearest (docs/geometry.md, CAD solids).
+  if (faces.empty() && cad::is_closed_shell(shape))
+    return {cad::make_solid_wall(shape, walls, fs, scale, path.filename().string())};
   return walls;
 }
 

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "curvsph/cad/cad_import.hpp"
+#include "curvsph/cad/cad_solid_wall.hpp"
 
 using namespace curvsph;
 
@@ -22,15 +23,20 @@ TEST(CadUPipe, ImportsAndAnswersRadiusOnAxis) {
   std::cout << "u_pipe.step: " << cad::describe_shape(shape) << "\n";
   const auto walls = make_cad_walls(YAML::Load("{shape: cad, file: u_pipe.step, fluid: inside}"),
                                     "case.yaml", "walls.0", kDir);
-  ASSERT_EQ(walls.size(), 5u);
+  // A closed solid: one wall whose 5 faces answer (cad_solid_wall.hpp).
+  ASSERT_EQ(walls.size(), 1u);
+  const auto* solid = dynamic_cast<const cad::CadSolidWall*>(walls[0].get());
+  ASSERT_NE(solid, nullptr);
+  const auto& faces = solid->faces();
+  ASSERT_EQ(faces.size(), 5u);
   WallSet<3> set;
-  for (const auto& w : walls) set.add(w);
+  set.add(walls[0]);
   int cylinders = 0;
   int index = 0;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next(), ++index) {
     BRepAdaptor_Surface ad(TopoDS::Face(ex.Current()));
-    std::cout << "  " << walls[index]->describe()
-              << " min radius of curvature=" << walls[index]->min_radius_of_curvature() << "\n";
+    std::cout << "  " << faces[index]->describe()
+              << " min radius of curvature=" << faces[index]->min_radius_of_curvature() << "\n";
     if (ad.GetType() == GeomAbs_Torus) {
       const gp_Torus t = ad.Torus();
       std::cout << "    torus R=" << t.MajorRadius() << " a=" << t.MinorRadius() << "\n";
@@ -43,7 +49,7 @@ TEST(CadUPipe, ImportsAndAnswersRadiusOnAxis) {
     const double vm = 0.5 * (ad.FirstVParameter() + ad.LastVParameter());
     const gp_Pnt o = c.Location().Translated(gp_Vec(c.Axis().Direction()) * vm);
     const Vec3d x(o.X(), o.Y(), o.Z());
-    const WallPoint<3> p = walls[index]->closest(x);
+    const WallPoint<3> p = faces[index]->closest(x);
     const WallPoint<3> q = set.closest(x);
     std::cout << "    cylinder R=" << R << " axis point " << x.transpose() << ": distance "
               << p.distance << " k1=" << p.k1 << " k2=" << p.k2 << " (set: wall " << q.wall

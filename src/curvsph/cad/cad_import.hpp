@@ -7,6 +7,10 @@
 // unit the file declares; `scale` (optional) multiplies after that. STL is read as metres
 // (times `scale`) into a triangle-mesh wall. `file` is relative to the case file's directory.
 //
+// A closed shell or solid with all its faces (no `faces` key) is ONE wall (CadSolidWall): the
+// nearest face answers, the solid decides the side at edges and corners. An open shell, or a
+// `faces` selection, stays one wall per face.
+//
 // Fluid side of a solid: face normals oriented outward from the material (OCCT: the
 // surface normal Su x Sv, flipped for faces with TopAbs_REVERSED orientation); `inside`
 // puts the fluid inside the closed shell (a pipe's bore), `outside` around it.
@@ -33,6 +37,10 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
 // One trimmed NURBS wall per face of `shape` (all faces when `faces` is empty).
 std::vector<WallPtr<3>> faces_to_walls(const TopoDS_Shape& shape, FluidSide side, double scale,
                                        const std::vector<int>& faces = {});
+// One wall for a closed shell: the faces of faces_to_walls(shape, side, scale) (all of them, in
+// that order) under the solid's classifier (cad_solid_wall.hpp).
+WallPtr<3> make_solid_wall(const TopoDS_Shape& shape, const std::vector<WallPtr<3>>& faces,
+                           FluidSide side, double scale, const std::string& label);
 // Human-readable inventory: face count and surface types.
 std::string describe_shape(const TopoDS_Shape& shape);
 

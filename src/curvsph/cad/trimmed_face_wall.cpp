@@ -55,6 +55,10 @@ TrimmedFaceWall::TrimmedFaceWall(std::shared_ptr<const NurbsSurfaceWall> surface
 
 TrimmedFaceWall::~TrimmedFaceWall() = default;
 
+const TopoDS_Face& TrimmedFaceWall::face() const {
+  return occ_->face;
+}
+
 WallPoint<3> TrimmedFaceWall::closest(const Vec3d& x, const ParamSeed& seed) const {
   WallPoint<3> w = surf_->closest(x, seed);
   // Trimming test in the face's own parameter space (the converted NURBS may be

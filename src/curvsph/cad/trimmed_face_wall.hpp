@@ -28,6 +28,7 @@ class TrimmedFaceWall : public Wall<3> {
   std::string describe() const override { return label_ + ": " + surf_->describe(); }
   double min_radius_of_curvature() const override { return surf_->min_radius_of_curvature(); }
   const NurbsSurfaceWall& surface_wall() const { return *surf_; }
+  const TopoDS_Face& face() const;
 
   // The face in its own parametrisation (OpenCASCADE's surface of the face, lengths times the
   // scale), for boundary elements: the (u, v) bounds of the face {u0, u1, v0, v1}, the point

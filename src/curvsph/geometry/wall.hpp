@@ -76,6 +76,10 @@ class Wall {
   // Lets callers that only care about points within some reach (ghosts within 2h) skip the
   // full closest-point query of iterative shapes far from the wall.
   virtual double distance_lower_bound(const VecD<D>& /*x*/) const { return 0.0; }
+  // True when the signed distance is that of a closed surface: continuous across space, so
+  // |d(x) - d(y)| <= |x - y| and an answer at y bounds the answer at x (the fill skips queries
+  // with it). False for open walls, whose sign flips beyond their edges.
+  virtual bool closed_surface() const { return false; }
 
   WallMotion<D> motion;
 };

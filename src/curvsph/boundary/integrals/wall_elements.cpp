@@ -343,6 +343,7 @@ const std::vector<Discretizer<3>>& discretizers<3>() {
                                                     torus_3d,
                                                     wall_elements_detail::nurbs_surface_3d,
                                                     wall_elements_detail::trimmed_face_3d,
+                                                    wall_elements_detail::cad_solid_3d,
                                                     wall_elements_detail::trimesh_3d};
   return table;
 }

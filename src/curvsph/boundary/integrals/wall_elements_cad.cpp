@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "curvsph/boundary/integrals/wall_elements_freeform.hpp"
+#include "curvsph/cad/cad_solid_wall.hpp"
 #include "curvsph/cad/trimmed_face_wall.hpp"
 #include "curvsph/core/quadrature.hpp"
 
@@ -434,6 +435,14 @@ bool trimmed_face_3d(const Wall<3>& w, double dx, const Bounds<3>&, BoundaryElem
                static_cast<int>(left % 2));
     }
   }
+  return true;
+}
+
+bool cad_solid_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds, BoundaryElements<3>& out) {
+  const auto* solid = dynamic_cast<const cad::CadSolidWall*>(&w);
+  if (!solid) return false;
+  // The faces' elements: neighbours meet vertex to vertex along their shared edges (above).
+  for (const auto& f : solid->faces()) trimmed_face_3d(*f, dx, bounds, out);
   return true;
 }
 

@@ -23,6 +23,8 @@ bool nurbs_surface_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds,
 // wall_elements_cad.cpp
 bool trimmed_face_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds,
                      BoundaryElements<3>& out);
+// A closed CAD solid: the elements of every face.
+bool cad_solid_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds, BoundaryElements<3>& out);
 bool trimesh_3d(const Wall<3>& w, double dx, const Bounds<3>& bounds, BoundaryElements<3>& out);
 
 }  // namespace curvsph::wall_elements_detail

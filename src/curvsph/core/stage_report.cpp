@@ -8,6 +8,14 @@
 
 namespace curvsph {
 
+void print_status_line(const std::string& line, bool tty) {
+  if (tty)
+    fmt::print(stderr, "\r{}\033[K", line);
+  else
+    fmt::print(stderr, "{}\n", line);
+  std::fflush(stderr);
+}
+
 namespace {
 std::atomic<bool> g_enabled{false};
 constexpr std::size_t kWidth = 79;
@@ -32,11 +40,7 @@ void StageReport::print(const std::string& detail) {
   const std::string line =
       fmt::format("setup: {}, {:.0f} s{}{}", stage_, s, detail.empty() ? "" : ": ", detail)
           .substr(0, kWidth);
-  if (tty_)
-    fmt::print(stderr, "\r{}\033[K", line);
-  else
-    fmt::print(stderr, "{}\n", line);
-  std::fflush(stderr);
+  print_status_line(line, tty_);
   printed_ = true;
 }
 

@@ -11,6 +11,10 @@
 
 namespace curvsph {
 
+// Writes a status line to stderr: rewritten in place on a terminal (tty), a line of its own in
+// a pipe; flushed. Shared by the set-up stage lines and the time loop's progress line.
+void print_status_line(const std::string& line, bool tty);
+
 inline constexpr double kStageReportAfter = 2.0;  // seconds
 inline constexpr double kStagePipeEvery = 5.0;    // seconds, as the progress line in a pipe
 

@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "curvsph/core/stage_report.hpp"
+
 namespace curvsph {
 
 namespace {
@@ -74,11 +76,7 @@ void Progress::update(long step, double t, double dt, bool force) {
   // on some terminals and the \r then rewrites only its second half.
   const std::size_t cols = tty_ ? terminal_columns() : 0;
   const std::string line = progress_line(f, tty_ ? (cols > 1 ? cols - 1 : 79) : 79);
-  if (tty_)
-    fmt::print(stderr, "\r{}\033[K", line);
-  else
-    fmt::print(stderr, "{}\n", line);
-  std::fflush(stderr);
+  print_status_line(line, tty_);
   printed_ = true;
 }
 

@@ -220,8 +220,8 @@ TEST(CadRoundTrip, StepInMillimetresReadsBackInMetres) {
   EXPECT_NEAR(x1 - x0, 0.010, 1e-9);
   EXPECT_NEAR(y1 - y0, 0.020, 1e-9);
   EXPECT_NEAR(z1 - z0, 0.030, 1e-9);
-  // A box with the fluid inside (a closed solid: one wall): the centre is 5 mm from the nearest face, on the fluid side;
-  // a point beyond a face's trimmed extent lands on that face's edge.
+  // A box with the fluid inside (a closed solid: one wall): the centre is 5 mm from the nearest
+  // face, on the fluid side; a point beyond a face's trimmed extent lands on that face's edge.
   const auto walls = make_cad_walls(YAML::Load("{shape: cad, file: box_mm.step, fluid: inside}"),
                                     "case.yaml", "walls.0", dir.string());
   ASSERT_EQ(walls.size(), 1u);  // a closed box: one wall of 6 faces (cad_solid_wall.hpp)

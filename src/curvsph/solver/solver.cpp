@@ -252,9 +252,13 @@ void Solver<D>::prepare_boundary() {
   boundary_->prepare(P_, t_);
   times_.shepard += boundary_->shepard_seconds() - shepard0;
   // Owned particles only: a halo copy that went through a wall is its owner's report.
-  std::vector<Index> through;
-  for (const Index i : boundary_->penetrated())
-    if (i < decomp_.owned()) through.push_back(i);
+  const auto owned_penetrated = [&] {
+    std::vector<Index> out;
+    for (const Index i : boundary_->penetrated())
+      if (i < decomp_.owned()) out.push_back(i);
+    return out;
+  };
+  std::vector<Index> through = owned_penetrated();
   const mpi::Comm& comm = decomp_.comm();
   const bool stop = case_.boundary.penetration_stop && !through.empty();
   const double contact = case_.boundary.contact * case_.dx;
@@ -272,9 +276,7 @@ void Solver<D>::prepare_boundary() {
     }
     cells_.build(P_.x);
     boundary_->prepare(P_, t_);
-    through.clear();
-    for (const Index i : boundary_->penetrated())
-      if (i < decomp_.owned()) through.push_back(i);
+    through = owned_penetrated();
   }
   std::optional<InstabilityError> err;
   if (!through.empty()) {
@@ -322,34 +324,28 @@ template <int D>
 void Solver<D>::remove_strays() {
   const Index n = static_cast<Index>(P_.size());
   keep_.clear();
-  for (Index i = 0; i < n; ++i)
-    if (!removal_box_.outside(P_.x[i]) || !P_.x[i].allFinite())  // NaN: check_state's
+  // The removed particles' count, ids and mass leave the conservation check's reference.
+  std::int64_t ids = 0, ids2 = 0;
+  double mass = 0;
+  for (Index i = 0; i < n; ++i) {
+    if (!removal_box_.outside(P_.x[i]) || !P_.x[i].allFinite()) {  // NaN: check_state's
       keep_.push_back(static_cast<std::size_t>(i));
-  const auto removed = static_cast<std::int64_t>(static_cast<std::size_t>(n) - keep_.size());
-  if (removed == 0) decomp_.forget(0, 0, 0, 0);  // [mpi] collective with check_conservation
-  if (removed > 0) {
-    // [mpi] the conservation check's reference loses them too.
-    std::int64_t ids = 0, ids2 = 0;
-    double mass = 0;
-    std::size_t k = 0;
-    for (Index i = 0; i < n; ++i) {
-      if (k < keep_.size() && keep_[k] == static_cast<std::size_t>(i)) {
-        ++k;
-        continue;
-      }
-      ids += P_.id[i];
-      ids2 += P_.id[i] * P_.id[i];
-      mass += static_cast<double>(P_.mass[i]);
+      continue;
     }
-    decomp_.forget(removed, ids, ids2, mass);
-    P_.permute(keep_);
-    if (tv_.b.size() == static_cast<std::size_t>(n)) {  // b follows its particles
-      tv_acc_.resize(keep_.size());
-      for (std::size_t j = 0; j < keep_.size(); ++j) tv_acc_[j] = tv_.b[keep_[j]];
-      tv_.b.swap(tv_acc_);
-    }
-    stray_.removed += static_cast<long>(removed);
+    ids += P_.id[i];
+    ids2 += P_.id[i] * P_.id[i];
+    mass += static_cast<double>(P_.mass[i]);
   }
+  const auto removed = static_cast<std::int64_t>(static_cast<std::size_t>(n) - keep_.size());
+  decomp_.forget(removed, ids, ids2, mass);  // [mpi] collective with check_conservation
+  if (removed == 0) return;
+  P_.permute(keep_);
+  if (tv_.b.size() == static_cast<std::size_t>(n)) {  // b follows its particles
+    tv_acc_.resize(keep_.size());
+    for (std::size_t j = 0; j < keep_.size(); ++j) tv_acc_[j] = tv_.b[keep_[j]];
+    tv_.b.swap(tv_acc_);
+  }
+  stray_.removed += static_cast<long>(removed);
 }
 
 template <int D>
@@ -415,13 +411,20 @@ Real Solver<D>::stable_dt() const {
   const Index n = decomp_.owned();
   const Real vmax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.v[i].squaredNorm(); }));
   const Real amax = std::sqrt(parallel_max(n, 0, [&](Index i) { return P_.a[i].squaredNorm(); }));
-  const Real h = W_.h;
-  const Real cfl = static_cast<Real>(case_.cfl);
-  Real dt = cfl * h / (F_.eos.c0 + vmax);                             // acoustic CFL
-  if (nu_max_ > 0) dt = std::min(dt, Real(0.125) * h * h / nu_max_);  // viscous (Morris 1997)
-  if (amax > 0) dt = std::min(dt, Real(0.25) * std::sqrt(h / amax));  // force (Monaghan 1992)
-  if (case_.dt_max > 0) dt = std::min(dt, static_cast<Real>(case_.dt_max));
+  const Real dt = dt_limits(vmax, amax).min();
   return static_cast<Real>(decomp_.comm().min(static_cast<double>(dt)));  // [mpi]
+}
+
+template <int D>
+typename Solver<D>::DtLimits Solver<D>::dt_limits(Real vmax, Real amax) const {
+  const Real h = W_.h;
+  const Real inf = std::numeric_limits<Real>::infinity();
+  DtLimits l;
+  l.acoustic = static_cast<Real>(case_.cfl) * h / (F_.eos.c0 + vmax);  // acoustic CFL
+  l.force = amax > 0 ? Real(0.25) * std::sqrt(h / amax) : inf;         // Monaghan 1992
+  l.viscous = nu_max_ > 0 ? Real(0.125) * h * h / nu_max_ : inf;       // Morris 1997
+  l.set = case_.dt_max > 0 ? static_cast<Real>(case_.dt_max) : inf;    // time.dt_max
+  return l;
 }
 
 template <int D>
@@ -442,12 +445,9 @@ void Solver<D>::check_dt(Real stable, Real dt) const {
   }
   // Which limit of stable_dt() is the smallest: the acoustic one names the fastest particle,
   // the force one the most accelerated, the viscous one the fluid of the largest nu.
-  const Real h = W_.h, vmax = P_.v[iv].norm(), amax = P_.a[ia].norm();
-  const Real inf = std::numeric_limits<Real>::infinity();
-  const Real dt_cfl = static_cast<Real>(case_.cfl) * h / (F_.eos.c0 + vmax);
-  const Real dt_force = amax > 0 ? Real(0.25) * std::sqrt(h / amax) : inf;
-  const Real dt_visc = nu_max_ > 0 ? Real(0.125) * h * h / nu_max_ : inf;
-  const Real dt_set = case_.dt_max > 0 ? static_cast<Real>(case_.dt_max) : inf;
+  const Real vmax = P_.v[iv].norm(), amax = P_.a[ia].norm();
+  const DtLimits l = dt_limits(vmax, amax);
+  const Real dt_cfl = l.acoustic, dt_force = l.force, dt_visc = l.viscous, dt_set = l.set;
   std::string limit;
   long id = -1;
   if (dt_set < std::min({dt_cfl, dt_force, dt_visc})) {

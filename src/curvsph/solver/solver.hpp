@@ -2,6 +2,7 @@
 // One weakly-compressible SPH simulation: particles, neighbour search, the density and force
 // passes and kick-drift-kick time integration (DESIGN.md §1). Output and analysis live in
 // run.cpp; this class only advances the state.
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <unordered_set>
@@ -104,6 +105,13 @@ class Solver {
 
   // The time step the CFL, viscous and force limits allow for the current state.
   Real stable_dt() const;
+  // The limits stable_dt() takes the smallest of, for given largest |v| and |a|: acoustic CFL,
+  // force (Monaghan 1992), viscous (Morris 1997) and time.dt_max (inf where inactive).
+  struct DtLimits {
+    Real acoustic, force, viscous, set;
+    Real min() const { return std::min({acoustic, force, viscous, set}); }
+  };
+  DtLimits dt_limits(Real vmax, Real amax) const;
   // Throws InstabilityError "time step collapsed" when the step dt (stable_dt() capped by the
   // caller) does not advance t, or stable_dt() is below 1e-12 time.end (a run of more than
   // 10^12 steps: rho0 = 1e-300 or a velocity of 1e200 gave dt = 0 for ever), naming the

@@ -216,10 +216,9 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
         fig9[m] = nlohmann::json::parse(read_text(dir / "metrics.json"));
         continue;
       }
-      Case c =
-          read_case(path, {"boundary.map=" + maps[m], fmt::format("time.end={}", t_end9),
-                           fmt::format("resolution.dx={:.17g}", dx9), "forcing.drive.v0=0.5",
-                           fmt::format("output.every={}", t_end9 / 20)});
+      Case c = read_case(path, {"boundary.map=" + maps[m], fmt::format("time.end={}", t_end9),
+                                fmt::format("resolution.dx={:.17g}", dx9), "forcing.drive.v0=0.5",
+                                fmt::format("output.every={}", t_end9 / 20)});
       c.make_strays_fatal();  // t_max: the survival time of Vela Vela's Fig. 9
       RunOptions o;
       o.out_dir = dir;

@@ -21,6 +21,7 @@
 #include "curvsph/boundary/boundary_model.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/solver.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -17,6 +17,7 @@
 #include "curvsph/io/case_overrides.hpp"
 #include "curvsph/solver/run.hpp"
 #include "curvsph/solver/solver.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

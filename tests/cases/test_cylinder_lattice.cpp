@@ -13,6 +13,7 @@
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/eos.hpp"
 #include "curvsph/solver/solver.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

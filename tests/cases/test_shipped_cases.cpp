@@ -6,6 +6,7 @@
 
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -17,6 +17,7 @@
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/nurbs/curve.hpp"
 #include "curvsph/solver/solver.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -14,6 +14,7 @@
 #include "../support/command_fixture.hpp"
 #include "curvsph/io/pvd_series.hpp"
 #include "curvsph/io/vtk_reader.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -11,6 +11,7 @@
 
 #include "curvsph/io/vtk_reader.hpp"
 #include "support/command_fixture.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -16,6 +16,7 @@
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/physics/transport_velocity.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -7,6 +7,7 @@
 #include "../support/quiet_run.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -20,6 +20,7 @@
 #include "curvsph/io/pvd_series.hpp"
 #include "curvsph/setup/generate.hpp"
 #include "curvsph/solver/run_guards.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph {
 namespace {

@@ -9,6 +9,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/solver/stop_signal.hpp"
 #include "curvsph/validation/study.hpp"
+#include "curvsph_build_paths.hpp"
 
 namespace curvsph::app {
 namespace {

@@ -13,7 +13,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 for f in cases/dam_break_2d.yaml cases/u_pipe_at_rest.yaml data/cad/u_pipe.step scripts/vtp.py; do
   [ -f "$share/$f" ] || fail "not installed: $share/$f"
 done
-[ -f "$prefix/share/doc/curvsph/README.md" ] || fail "README.md not installed"
+[ -f "$prefix/share/doc/curvsph/docs/manual.md" ] || fail "docs/manual.md not installed"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

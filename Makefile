@@ -4,8 +4,10 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 PYTHON ?= /usr/bin/python3
+# make install PREFIX=$HOME/.local: where `cmake --install` puts bin/curvsph and share/curvsph.
+PREFIX ?= /usr/local
 
-.PHONY: all deps configure build demo demo-mpi test bench validate format tidy clean
+.PHONY: all deps configure build install demo demo-mpi test bench validate format tidy clean
 
 all: build
 
@@ -19,6 +21,11 @@ configure: deps $(BUILD)/build.ninja
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
+
+# The binary in PREFIX/bin, cases, data and scripts in PREFIX/share/curvsph, the docs in
+# PREFIX/share/doc/curvsph (CMakeLists.txt, install rules).
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 demo: build
 	scripts/demo

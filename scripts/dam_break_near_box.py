@@ -8,7 +8,7 @@ Usage:
 
 RUN_DIR holds particles_*.vtp and series.pvd (a `curvsph run` with output.vtk on, e.g. a
 --restart at 0.40 s with output.every = 0.001). Findings: docs/validation/dam_break_3d/
-findings.md, session 12. Box face toward the water at x = 0.8245 m, box y in [0.295, 0.698].
+findings.md, commit afec46d. Box face toward the water at x = 0.8245 m, box y in [0.295, 0.698].
 """
 import glob
 import os

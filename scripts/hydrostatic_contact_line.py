@@ -1,6 +1,6 @@
 """Mean of a particle field binned by distance to the nearer side wall and depth below the
 free surface, from one snapshot of the hydrostatic tank (docs/validation/hydrostatic_tank/
-findings.md, session 16: the motion at the contact lines).
+findings.md, commit d38136d: the motion at the contact lines).
 
     /usr/bin/python3 scripts/hydrostatic_contact_line.py RUN/particles_000010.vtp velocity 1 [DX]
 

@@ -2,7 +2,11 @@
 energy and pressure error against t sqrt(g/H) for every run (solid: geometric Shepard factor,
 dashed: volume, dotted: the mirror-ghost comparison row, dash-dot: the h/dx = 4 comparison rows
 with one change to the case), the pressure profile against depth at the end, and the particles near the
-right-hand corner at the end (coloured by p - p_hydrostatic)."""
+right-hand corner at the end (coloured by p - p_hydrostatic).
+
+The last two read RUN/hydrostatic_profile.csv, a per-particle dump that is not committed (it
+is written by the run and ignored by git): a run reused from its committed metrics has none,
+and a figure without any profile keeps its committed PNG (delete RUN/ to redo the run)."""
 import csv
 import os
 import sys
@@ -30,6 +34,16 @@ def color(r):
     if key not in colors:
         colors[key] = palette[len(colors) % len(palette)]
     return colors[key]
+
+
+def profile(r):
+    """The per-particle profile at the end of run r, or None when the run left none here."""
+    path = os.path.join(out, r["run"], "hydrostatic_profile.csv")
+    if not os.path.exists(path):
+        print(f"plot_hydrostatic_tank: {path} missing (not committed; rerun to regenerate)",
+              file=sys.stderr)
+        return None
+    return np.genfromtxt(path, delimiter=",", names=True)
 
 
 def history(r):
@@ -65,12 +79,15 @@ shown = [r for r in runs if r["h_over_dx"] == "2"]
 finest = max(shown, key=lambda r: int(r["particles"]))
 pick = [r for r in shown if r["dx"] == shown[0]["dx"]] + [finest]
 seen = set()
+drawn = 0
 for r in pick:
     if r["run"] in seen:
         continue
     seen.add(r["run"])
-    d = np.genfromtxt(os.path.join(out, r["run"], "hydrostatic_profile.csv"), delimiter=",",
-                      names=True)
+    d = profile(r)
+    if d is None:
+        continue
+    drawn += 1
     ax.plot(d["p"] / 1000, d["y"], ".", ms=1.5, alpha=0.4, color=color(r) if r["shepard"] ==
             "geometric" else "gray", label=label(r) + f", t√(g/H)={float(r['t_end_reached']):.1f}")
 y = np.linspace(0, 0.5, 50)
@@ -81,15 +98,17 @@ ax.set_title("Pressure against depth at the end")
 ax.legend(fontsize=7, markerscale=6)
 ax.grid(True, alpha=0.3)
 fig.tight_layout()
-fig.savefig(os.path.join(out, "pressure_profile.png"), dpi=120)
+if drawn:
+    fig.savefig(os.path.join(out, "pressure_profile.png"), dpi=120)
 plt.close(fig)
 
 # Fig. 9: the right-hand corner at the end, geometric against volume (N ~ 10^4), and ghosts.
 base = [r for r in runs if r["dx"] == runs[0]["dx"] and r["h_over_dx"] == "2"]
+base = [(r, d) for r, d in ((r, profile(r)) for r in base) if d is not None]
+if not base:
+    sys.exit(0)
 fig, axes = plt.subplots(1, len(base), figsize=(5 * len(base), 4.2), squeeze=False)
-for ax, r in zip(axes[0], base):
-    d = np.genfromtxt(os.path.join(out, r["run"], "hydrostatic_profile.csv"), delimiter=",",
-                      names=True)
+for ax, (r, d) in zip(axes[0], base):
     sel = (d["x"] > 0.75) & (d["y"] > 0.3)
     sc = ax.scatter(d["x"][sel], d["y"][sel], c=(d["p"] - d["p_exact"])[sel] / (998 * 9.81 * 0.5),
                     s=6, cmap="coolwarm", vmin=-0.02, vmax=0.02)

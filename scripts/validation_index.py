@@ -7,7 +7,9 @@ import sys
 root = sys.argv[1] if len(sys.argv) > 1 else "docs/validation"
 lines = ["# Validation studies", "",
          "Regenerate with `make validate` (or `build/curvsph validate NAME`). Each study's own "
-         "folder holds its CSV data, plots and a README with the details.", "",
+         "folder holds its summary CSV data, plots and a README with the details; the "
+         "per-particle dumps of its runs (profiles, point sets, snapshots) are written there "
+         "by `validate` and ignored by git (.gitignore).", "",
          "| study | figure | measured | target | reference | |", "|---|---|---|---|---|---|"]
 for name in sorted(os.listdir(root)):
     path = os.path.join(root, name, "summary.json")

@@ -1,4 +1,4 @@
-// The U-bend pipe of shared/data/cad: two cylinders, a torus, two planes.
+// The U-bend pipe of data/cad: two cylinders, a torus, two planes.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -10,11 +10,12 @@
 
 #include "curvsph/cad/cad_import.hpp"
 #include "curvsph/cad/cad_solid_wall.hpp"
+#include "curvsph_build_paths.hpp"
 
 using namespace curvsph;
 
 namespace {
-const std::string kDir = "/work/shared/data/cad";
+const std::string kDir = CURVSPH_SOURCE_DIR "/data/cad";
 }
 
 TEST(CadUPipe, ImportsAndAnswersRadiusOnAxis) {

@@ -1,5 +1,5 @@
 // The fill of a closed CAD solid (region inside_walls, one CadSolidWall): the U-bend pipe of
-// shared/data/cad filled at dx = a / 4 (a = its bore radius), the particle count against the
+// data/cad filled at dx = a / 4 (a = its bore radius), the particle count against the
 // solid's volume and area from OpenCASCADE's BRepGProp, every particle inside the pipe and at
 // least 0.3 dx from its wall by the pipe's own geometry (centre line and bore radius).
 #include <fmt/format.h>
@@ -17,11 +17,12 @@
 #include "curvsph/cad/cad_solid_wall.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/setup/generate.hpp"
+#include "curvsph_build_paths.hpp"
 
 using namespace curvsph;
 
 namespace {
-const std::string kDir = "/work/shared/data/cad";
+const std::string kDir = CURVSPH_SOURCE_DIR "/data/cad";
 
 // The U-pipe's wall distance from its own geometry, > 0 inside (scale 1000): the bore radius
 // less the distance to the centre line (two straight legs and the bend's circle, from the

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/io/data_file.hpp"
 
 namespace curvsph {
 namespace {
@@ -227,8 +228,8 @@ std::unique_ptr<Analysis<3>> make_dam_break_analysis(const YAML::Node& params, c
                        "unknown key (allowed here: experiment)");
   if (!params["experiment"] || !params["experiment"].IsScalar())
     throw InputError(file, key + ".experiment", "missing (the path of the experiment record)");
-  std::filesystem::path path = params["experiment"].as<std::string>();
-  if (path.is_relative()) path = c.file.parent_path() / path;
+  const std::filesystem::path path = resolve_data_file(
+      params["experiment"].as<std::string>(), c.file.parent_path(), file, key + ".experiment");
   return std::make_unique<DamBreakAnalysis>(read_experiment(path, file, key + ".experiment"), file);
 }
 

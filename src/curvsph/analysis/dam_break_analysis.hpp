@@ -4,7 +4,7 @@
 //   analysis: {dam_break: {experiment: PATH}}
 // PATH (relative to the case file, or absolute) is the benchmark's record
 // (test_case_2_exp_data.dat: time, P1..P8, then the heights at x = 1.488, 0.992, 0.496,
-// 2.638 m, i.e. H3, H2, H1, H4 in the benchmark's numbering: ../shared/data/spheric2/README.md).
+// 2.638 m, i.e. H3, H2, H1, H4 in the benchmark's numbering: data/spheric2/README.md).
 // The run's probes.csv must hold P1..P8 (field p_wall, or p) and gauges H1..H4.
 //
 // Figures (pressures in Pa, times in s; NaN = not reached):

@@ -9,6 +9,8 @@
 #include <optional>
 #include <sstream>
 
+#include "curvsph/io/data_file.hpp"
+
 namespace curvsph {
 namespace {
 
@@ -134,9 +136,9 @@ std::unique_ptr<Analysis<2>> make_surge_front_analysis(const YAML::Node& params,
       const std::string k = kv.first.as<std::string>();
       const std::string kk = key + "." + k;
       if (k == "experiment") {
-        std::filesystem::path path = kv.second.as<std::string>();
-        if (path.is_relative()) path = c.file.parent_path() / path;
-        exp = read_front_csv(path, file, kk);
+        exp = read_front_csv(
+            resolve_data_file(kv.second.as<std::string>(), c.file.parent_path(), file, kk), file,
+            kk);
         continue;
       }
       double v = 0;

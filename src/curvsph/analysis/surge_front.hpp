@@ -6,7 +6,7 @@
 // x0: the wall behind the column (default: the initial particles' smallest x); a: the column's
 // width (default: the initial particles' x extent); far_wall: the opposite wall (optional: the
 // run-up height is measured there); experiment: a CSV `T,Z` with T = t sqrt(2 g/a), Z = x/a
-// (optional; ../shared/data/martin_moyce/), relative to the case file.
+// (optional; data/martin_moyce/), relative to the case file.
 // The front is the largest x of the particles on the floor (within 2 dx of the lowest particle
 // level: a droplet thrown ahead above the floor is not the front), until it reaches the far wall.
 // Figures: surge_front_points (experiment points within the simulated range, before the far

@@ -25,6 +25,7 @@
 #include "curvsph/cad/trimmed_face_wall.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/trimesh_wall.hpp"
+#include "curvsph/io/data_file.hpp"
 #include "curvsph/nurbs/yaml_input.hpp"
 
 namespace curvsph {
@@ -194,8 +195,6 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
   reject_unknown_keys(node, {"shape", "file", "fluid", "scale", "faces", "motion", "name"}, ctx);
   const YAML::Node fn = require(node, "file", ctx);
   if (!fn.IsScalar()) throw InputError(file, ctx.key("file"), "expected a file name");
-  std::filesystem::path path(fn.as<std::string>());
-  if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
   const std::string side = read_choice(node, "fluid", {"inside", "outside"}, ctx);
   double scale = 1.0;
   if (node["scale"]) scale = read_double(node["scale"], "scale", ctx);
@@ -203,12 +202,12 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
   std::vector<int> faces;
   if (node["faces"])
     for (double f : read_doubles(node["faces"], "faces", ctx)) faces.push_back(static_cast<int>(f));
+  // Looked for once the other keys are checked: a wrong key is named before a missing file.
+  const std::filesystem::path path =
+      resolve_data_file(fn.as<std::string>(), base_dir, file, ctx.key("file"));
   const cad::FluidSide fs = side == "inside" ? cad::FluidSide::inside : cad::FluidSide::outside;
   if (cad::lower_ext(path.string()) == ".stl") {
     // STL has no unit: read as metres (times `scale`).
-    if (!std::filesystem::exists(path))
-      throw InputError(file, ctx.key("file"),
-                       fmt::format("CAD file '{}' not found", path.string()));
     // Both fluid sides need a closed surface: the sign of the distance is only defined there.
     cad::StlMesh mesh = cad::read_stl(path.string(), file, ctx.key("file"));
     cad::require_closed(mesh, path.string(), file, ctx.key("file"));

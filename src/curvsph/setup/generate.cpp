@@ -200,7 +200,7 @@ void generate_particles(const Case& c, Particles<D>& P, const WallSet<D>& walls)
   // The last answer of each closed wall (Wall::closed_surface: |d(x) - d(y)| <= |x - y|):
   // a lattice point near it whose distance that bound settles needs no query. The points come
   // row by row dx apart, so far from a CAD solid one query settles tens of points (the U-pipe
-  // of shared/data/cad at dx = a/4: 3.4 s instead of 17 s, docs/geometry.md).
+  // of data/cad at dx = a/4: 3.4 s instead of 17 s, docs/geometry.md).
   struct Known {
     VecD<D> y;
     double d;

@@ -404,7 +404,7 @@ StudyResult run_cylinder_lattice_study(const StudyContext& ctx) {
      << "Case `cases/cylinder_lattice.yaml`: periodic [-0.5, 0.5]^2, obstacle r = 0.2, free "
         "slip, drive eq. 36 with tau = 1, rho0 = 1, nu = 0.01, Tait c0 = 7.5 (fixed for every "
         "v0, see below) and p0 = B = rho0 c0^2 / gamma = 8.036 (the pressure stays positive at "
-        "every density; with p0 = 2, used before 2026-11-25, a wake particle below "
+        "every density; with p0 = 2, used before commit 657611d, a wake particle below "
         "0.96 rho0 was in tension and its ghosts pulled it onto the obstacle: findings.md, the "
         "p0 = 2 study in `p0_2/`), random initial positions relaxed with the walls active (500 "
         "steps, "

@@ -141,7 +141,7 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
         "x = 0.8245 m); rho0 = 998, nu = 1e-6, linear EOS with c0 = 40 m/s, continuity density "
         "with delta-SPH (0.1), no artificial viscosity, h/dx = 2, walls by boundary integrals "
         "with the geometric Shepard factor, no-slip (BI viscous wall term), initial hydrostatic "
-        "pressure. Experiment: `../shared/data/spheric2/test_case_2_exp_data.dat` (its height "
+        "pressure. Experiment: `data/spheric2/test_case_2_exp_data.dat` (its height "
         "columns are H3, H2, H1, H4 in the benchmark's numbering; see the data README).\n\n"
         "**Pressure sensors.** P1-P4 sit on the box's face toward the water, P5-P8 on its top. "
         "A wall-mounted sensor reads the pressure at the wall surface, so the probes use the "

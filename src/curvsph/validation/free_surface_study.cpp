@@ -152,7 +152,7 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
      << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "") << ".\n\n"
      << table << "\n## Surge front of the dam break (Martin & Moyce 1952)\n\n"
      << "Front = the largest x of the particles on the floor, over the column width a, against "
-        "`../shared/data/martin_moyce/front_a_2.25in.csv`, up to the far wall (x = 16 a).\n\n"
+        "`data/martin_moyce/front_a_2.25in.csv`, up to the far wall (x = 16 a).\n\n"
      << front_table << "\n![surge front](surge_front.png)\n\n"
      << summary_markdown(r.summary);
   return r;

@@ -3,8 +3,8 @@
 // 5 10^4, 10^5 (h/dx = 2) and h/dx = 2, 3, 4 at the finest resolution, until
 // t sqrt(g/H) = 20 or failure. The expensive runs stop earlier (column `tau_end` of the
 // table below: the reduced time asked for); the README says which. Writes, per run,
-// RUN/hydrostatic_history.csv and hydrostatic_profile.csv, then hydrostatic_tank.csv, the
-// plots of scripts/plot_hydrostatic_tank.py and README.md.
+// RUN/hydrostatic_history.csv and hydrostatic_profile.csv (per particle: git ignores it), then
+// hydrostatic_tank.csv, the plots of scripts/plot_hydrostatic_tank.py and README.md.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -32,7 +32,7 @@ struct TankRun {
   std::string variant = {};
   std::string change = {};
   // Outputs (kinetic-energy and pressure samples) over the run. 400 for the N ~ 10^5, h/dx = 3
-  // row: its run to t sqrt(g/H) = 20 (session 18) kept the 0.0113 s interval of the earlier
+  // row: its run to t sqrt(g/H) = 20 (commit 9fd5e58) kept the 0.0113 s interval of the earlier
   // run of that row to 5.
   int samples = 100;
 };
@@ -53,12 +53,12 @@ std::vector<std::string> wall_overrides(const TankRun& run) {
 
 StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
   const auto case_path = ctx.source_dir / "cases" / "hydrostatic_tank.yaml";
-  // The paper runs every case to t sqrt(g/H) = 20. On the 2 cores of the 2026-11-25 machine
+  // The paper runs every case to t sqrt(g/H) = 20. On 2 cores of an AMD EPYC machine
   // (about 2e6 particle-steps/s at N ~ 5e4, 2 threads) that is 2.5 min for N ~ 10^4, 30 min for
   // N ~ 5 10^4 and 75 min for N ~ 10^5 at h/dx = 2 (more at h/dx = 3, 4: more neighbours), so
   // every resolution at h/dx = 2 runs the paper's full time with geometric gamma, N ~ 10^4 and
-  // 5 10^4 in volume mode too; N ~ 10^5 at h/dx = 3 runs to 20 as well (2.6 h on the Xeon of
-  // 2026-11-27), the h/dx = 4 rows are shortened (the README says which). Finished runs are reused
+  // 5 10^4 in volume mode too; N ~ 10^5 at h/dx = 3 runs to 20 as well (2.6 h on an Intel
+  // Xeon), the h/dx = 4 rows are shortened (the README says which). Finished runs are reused
   // (cached_run), so raising a tau_end here reruns only that run.
   std::vector<TankRun> runs;
   if (ctx.quick) {
@@ -73,12 +73,13 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
             {316, 2, "volume", 20.0},
             {140, 2, "ghost", 20.0},
             // Comparison rows (reported, not checked): the h/dx = 4 failure at the contact
-            // lines with each of the changes tried against it (findings.md, sessions 16, 19).
+            // lines with each of the changes tried against it (findings.md, commits d38136d and
+            // 99490e6).
             {446, 4, "geometric", 2.0, "fourtakas", "density.diffusion_term=fourtakas"},
             {446, 4, "geometric", 2.0, "wall_force", "boundary.wall_force=true"},
             {446, 4, "geometric", 2.0, "av", "artificial_viscosity.alpha=0.01"},
             // The paper's 92 mm tank at the 0.5 m: with c0 = 10 sqrt(gH) the same
-            // tank at (0.5/0.092)^1.5 = 12.67 times the viscosity (findings.md, session 21);
+            // tank at (0.5/0.092)^1.5 = 12.67 times the viscosity (findings.md, commit 0f37547);
             // asked to 10, it crosses a side wall at 6.31 (1942 s on 2 threads).
             {446, 4, "geometric", 10.0, "paper_re", "fluids.0.viscosity=0.011327"}};
   }
@@ -134,7 +135,7 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
     csv << fmt::format("{},{:.9g},{},{},{},{},{},{:.6g},{},{:.6g},{:.6g},{},{:.1f},{}\n", tag, dx,
                        run.h_over_dx, run.shepard, n, steps, run.tau_end, tau, unstable ? 1 : 0, ke,
                        pe, escaped, wall, run.variant);
-    // Runs stored before the element quadrature of the wall terms (findings.md, session 10).
+    // Runs stored before the element quadrature of the wall terms (findings.md, commit b46695f).
     const bool midpoint = run.shepard != "ghost" && !m.contains("bi_element_quadrature_points");
     if (midpoint) ++midpoint_runs;
     table +=
@@ -211,18 +212,20 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
         "pressure error: RMS over the particles of p - rho0 g (H - y), over rho0 g H. "
         "The row `n140_h2_ghost` is the same tank with the other wall treatment for comparison: "
         "mirror ghost walls (`boundary: {method: ghost, map: mirror, ghost_pressure: "
-        "hydrostatic}`) on the bare lattice (findings.md, session 12). The rows "
+        "hydrostatic}`) on the bare lattice (findings.md, commit afec46d). The rows "
         "`n446_h4_geometric_fourtakas`, `n446_h4_geometric_wall_force` and `n446_h4_geometric_av` "
         "repeat the failing h/dx = 4 run with one change each, `density.diffusion_term: "
         "fourtakas` (the density diffusion less its hydrostatic part, as AQUAgpusph's "
         "hydrostatic delta-SPH correction), `boundary.wall_force: true` (off in the paper's tank) "
         "and `artificial_viscosity.alpha: 0.01` (a momentum diffusion; the issue's tank has "
-        "none): comparisons, reported, not checked (findings.md, sessions 16 and 19). The row "
+        "none): comparisons, reported, not checked (findings.md, commits d38136d and 99490e6). The "
+        "row "
         "`n446_h4_geometric_paper_re` is the paper's tank at the issue's scale: Calderon's is "
         "92 mm deep, which with c0 = 10 sqrt(gH) is this tank at (0.5/0.092)^1.5 = 12.67 times "
         "the viscosity (`fluids.0.viscosity: 0.011327`, the paper's Reynolds number; "
-        "findings.md, session 21).\n\n"
-        "Why h/dx = 4 fails (findings.md, session 21): the boundary integrals hold a particle off "
+        "findings.md, commit 0f37547).\n\n"
+        "Why h/dx = 4 fails (findings.md, commit 0f37547): the boundary integrals hold a particle "
+        "off "
         "a wall by the 2 p_i part of the symmetric pressure term, a static stiffness measured as "
         "C p_i / (rho0 h^2) with C = 1.44, 0.79 and 0.50 at h/dx = 2, 3 and 4, so at a contact "
         "line (p_i small) and h/dx = 4 it is an order of magnitude weaker than at h/dx = 2 and "
@@ -258,9 +261,9 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
      << (midpoint_runs > 0
              ? fmt::format(
                    "**{} run(s) marked (midpoint)** were stored before the wall terms averaged "
-                   "the kernel over each element (element_quadrature.hpp, session 10) and took "
-                   "W at the element centres; their rows are that code's, not today's "
-                   "(findings.md, session 10).\n\n",
+                   "the kernel over each element (element_quadrature.hpp, commit b46695f) and took "
+                   "W at the element centres; their rows are that code's, not the current code's "
+                   "(findings.md, commit b46695f).\n\n",
                    midpoint_runs)
              : std::string())
      << "## Summary\n\n"
@@ -268,9 +271,10 @@ StudyResult run_hydrostatic_tank_study(const StudyContext& ctx) {
      << "\n## Figures\n\n![kinetic energy](kinetic_energy.png)\n\n"
         "![pressure error](pressure_error.png)\n\n![pressure profile](pressure_profile.png)\n\n"
         "![particles near the right corner](corner.png)\n\n"
-        "Data: `hydrostatic_tank.csv`, `RUN/hydrostatic_history.csv`, "
-        "`RUN/hydrostatic_profile.csv`, `metrics.json`. Regenerate: `curvsph validate "
-        "hydrostatic_tank`.\n";
+        "Data: `hydrostatic_tank.csv`, `RUN/hydrostatic_history.csv`, `metrics.json`; the "
+        "per-particle `RUN/hydrostatic_profile.csv` of the last two figures is written by a "
+        "run and not committed (a run reused from its stored metrics keeps the committed "
+        "figures; delete RUN/ to redo it). Regenerate: `curvsph validate hydrostatic_tank`.\n";
   return r;
 }
 

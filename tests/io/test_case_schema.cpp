@@ -248,5 +248,28 @@ TEST(YamlDuplicates, LoaderRefusesNamingFileKeyAndLine) {
   fs::remove(p);
 }
 
+// A duplicate that comes in a --set value is refused too (without a line: the line would be
+// the override's, not the file's).
+TEST(YamlDuplicates, InAnOverrideValue) {
+  const fs::path p =
+      fs::temp_directory_path() / ("curvsph_dup_set_" + std::to_string(getpid()) + ".yaml");
+  std::ofstream(p) << R"(dimension: 2
+resolution: {dx: 0.1}
+fluids: [{rho0: 1000, region: {box: {min: [0, 0], max: [1, 1]}}}]
+eos: {c0: 10}
+time: {end: 1}
+)";
+  EXPECT_NO_THROW(read_case(p, {"domain={min: [0, 0], max: [1, 1]}"}));
+  try {
+    read_case(p, {"domain={min: [0, 0], min: [1, 1]}"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), p.string());
+    EXPECT_EQ(e.key(), "domain.min");
+    EXPECT_EQ(e.reason(), "duplicate key");
+  }
+  fs::remove(p);
+}
+
 }  // namespace
 }  // namespace curvsph

@@ -266,7 +266,9 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.root = root;
   const std::string file = path.string();
   if (!root.IsMap()) throw InputError(file, "", "the case file must be a YAML mapping");
-  yaml::reject_duplicate_keys(root, file);  // also in values given by --set
+  // Again after the --set overrides (the file itself was checked by load_file): a line number
+  // would point into the override's text, not the file.
+  yaml::reject_duplicate_keys(root, file, false);
   const Keys top(root, file, "");
   top.allow({"name",
              "dimension",

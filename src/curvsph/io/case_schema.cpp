@@ -165,7 +165,8 @@ const Key* find(std::string_view path) {
 }
 
 const Key* find_element(std::string_view path) {
-  // Nested lists (a NURBS surface's control_points.2.3.0) take the entry of the outermost.
+  // Nested lists (a NURBS surface's control_points.2.3.0) take the entry of the nearest
+  // enclosing list the table declares.
   std::string p = pattern(path);
   while (p.size() >= 2 && p.compare(p.size() - 2, 2, ".*") == 0) {
     p.resize(p.size() - 2);

@@ -20,7 +20,7 @@ constexpr std::size_t kMaxYamlBytes = std::size_t{64} << 20;
 constexpr long kMaxYamlNodes = 10'000'000;
 
 void reject_duplicates(const YAML::Node& node, const std::string& file, const std::string& path,
-                       long& budget) {
+                       bool lines, long& budget) {
   if (--budget < 0) throw InputError(file, path, "too many YAML nodes (nested aliases?)");
   if (node.IsMap()) {
     std::set<std::string> seen;
@@ -29,21 +29,21 @@ void reject_duplicates(const YAML::Node& node, const std::string& file, const st
       if (kv.first.IsScalar() && !seen.insert(key).second)
         throw InputError(
             file, join(path, clip(key)),
-            kv.first.Mark().line >= 0
+            lines && kv.first.Mark().line >= 0
                 ? "duplicate key (again on line " + std::to_string(kv.first.Mark().line + 1) + ")"
                 : std::string("duplicate key"));
-      reject_duplicates(kv.second, file, join(path, key), budget);
+      reject_duplicates(kv.second, file, join(path, key), lines, budget);
     }
   } else if (node.IsSequence()) {
     std::size_t i = 0;
-    for (const auto& item : node) reject_duplicates(item, file, join(path, i++), budget);
+    for (const auto& item : node) reject_duplicates(item, file, join(path, i++), lines, budget);
   }
 }
 }  // namespace
 
-void reject_duplicate_keys(const YAML::Node& root, const std::string& file) {
+void reject_duplicate_keys(const YAML::Node& root, const std::string& file, bool lines) {
   long budget = kMaxYamlNodes;
-  reject_duplicates(root, file, "", budget);
+  reject_duplicates(root, file, "", lines, budget);
 }
 
 std::string join(const std::string& path, std::string_view key) {

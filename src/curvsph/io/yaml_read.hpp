@@ -89,7 +89,7 @@ YAML::Node load_file(const std::string& file);
 
 // yaml-cpp keeps both entries of a key written twice in one map, and node[key] answers the
 // first: the second value would be lost without a word. Throws an InputError naming `file`,
-// the key path and the line of the second entry.
-void reject_duplicate_keys(const YAML::Node& root, const std::string& file);
+// the key path and (with `lines`: the tree was read from `file`) the line of the second entry.
+void reject_duplicate_keys(const YAML::Node& root, const std::string& file, bool lines = true);
 
 }  // namespace curvsph::yaml

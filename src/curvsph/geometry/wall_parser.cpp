@@ -16,6 +16,7 @@
 #include "curvsph/geometry/plane.hpp"
 #include "curvsph/geometry/sphere.hpp"
 #include "curvsph/geometry/torus.hpp"
+#include "curvsph/io/quote.hpp"
 #include "curvsph/io/yaml_read.hpp"
 
 namespace curvsph {
@@ -139,7 +140,7 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
   const std::string shape_key = yaml::join(key, "shape");
   if (it == table.end())
     throw InputError(file, shape_key,
-                     fmt::format("unknown shape '{}' (shapes in {}-D: {})", shape, D,
+                     fmt::format("unknown shape {} (shapes in {}-D: {})", quote(shape), D,
                                  names_list(wall_shape_names<D>())));
   const WallFactory<D> make = factory_of<D>(*it);
   if (!make)

@@ -130,6 +130,30 @@ TEST(CaseSchema, EveryShippedCaseReadsInStrictMode) {
   EXPECT_GE(n, 20);
 }
 
+// Every key written in a shipped case (analysis and initial parameters included, which their
+// analyses read themselves) has its row: the walk visits every map key and list element.
+void expect_declared(const YAML::Node& node, const std::string& path, const std::string& file) {
+  if (!path.empty())
+    EXPECT_TRUE(schema::find(path) || schema::find_element(path))
+        << file << ": " << path << " (" << schema::pattern(path) << ") has no row";
+  if (node.IsMap())
+    for (const auto& kv : node)
+      expect_declared(kv.second, yaml::join(path, kv.first.Scalar()), file);
+  else if (node.IsSequence())
+    for (std::size_t i = 0; i < node.size(); ++i)
+      expect_declared(node[i], yaml::join(path, i), file);
+}
+
+TEST(CaseSchema, EveryKeyOfTheShippedCasesIsDeclared) {
+  int n = 0;
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(CURVSPH_SOURCE_DIR) / "cases")) {
+    if (e.path().extension() != ".yaml") continue;
+    ++n;
+    expect_declared(yaml::load_file(e.path().string()), "", e.path().string());
+  }
+  EXPECT_GE(n, 20);
+}
+
 // The parser's defaults are the table's: a minimal case leaves every key below out.
 TEST(CaseSchema, ParsedDefaultsEqualTheTable) {
   const Case c = read_case(YAML::Load(R"(

@@ -7,7 +7,7 @@ PYTHON ?= /usr/bin/python3
 # make install PREFIX=$HOME/.local: where `cmake --install` puts bin/curvsph and share/curvsph.
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build install demo demo-mpi test bench validate format tidy clean
+.PHONY: all deps configure build install demo demo-mpi test bench validate keys format tidy clean
 
 all: build
 
@@ -43,6 +43,11 @@ bench: build
 validate: build
 	$(BUILD)/curvsph validate all
 	$(PYTHON) scripts/validation_index.py
+
+# docs/keys.md is generated from the schema (src/curvsph/io/schema_table.cpp); a test fails
+# when it is stale.
+keys: build
+	$(BUILD)/curvsph keys --markdown > docs/keys.md
 
 format:
 	find src tests bench -name '*.hpp' -o -name '*.cpp' | xargs clang-format -i

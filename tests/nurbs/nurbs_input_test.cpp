@@ -54,8 +54,9 @@ TEST(NurbsInput, CurveErrorsNameTheKey) {
   EXPECT_EQ(curve_error("knots", "[0, 0, 0, 1, 1, 1]"), "walls.2.knots");         // count
   EXPECT_EQ(curve_error("knots", "[0, 0, 0, 0.7, 0.5, 1, 1]"), "walls.2.knots");  // decreasing
   EXPECT_EQ(curve_error("knots", "[0, 0, 0, 1, 1, 1, 1]"), "walls.2.knots");      // multiplicity
-  EXPECT_EQ(curve_error("weights", "[1, 0, 1, 1]"), "walls.2.weights");           // weight <= 0
-  EXPECT_EQ(curve_error("weights", "[1, -2, 1, 1]"), "walls.2.weights");
+  // A weight <= 0 is outside the schema's range for each element (io/schema_table.cpp).
+  EXPECT_EQ(curve_error("weights", "[1, 0, 1, 1]"), "walls.2.weights.1");
+  EXPECT_EQ(curve_error("weights", "[1, -2, 1, 1]"), "walls.2.weights.1");
   EXPECT_EQ(curve_error("weights", "[1, 1, 1]"), "walls.2.weights");  // count
   EXPECT_EQ(curve_error("knots", ""), "walls.2.knots");               // missing
   EXPECT_EQ(curve_error("degree", ""), "walls.2.degree");

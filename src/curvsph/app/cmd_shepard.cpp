@@ -8,6 +8,8 @@
 //  - none: gamma = 1.
 #include <fmt/format.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -18,6 +20,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/io/points_csv.hpp"
+#include "curvsph/io/quote.hpp"
 #include "curvsph/io/yaml_read.hpp"
 
 namespace curvsph::app {
@@ -30,6 +33,18 @@ struct ShepardArgs {
 };
 
 constexpr double kMaxLatticeParticles = 5e7;
+
+// A finite number > 0: CLI11's PositiveNumber lets `inf` through (and h = inf gave gamma for
+// a kernel that covers everything).
+const CLI::Validator kFinitePositive(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0))
+        return "must be a finite number > 0, got " + quote(text);
+      return {};
+    },
+    "FINITE > 0", "finite_positive");
 
 template <int D>
 std::vector<double> compute(const WallSet<D>& walls, const std::vector<VecD<D>>& points,
@@ -122,11 +137,14 @@ const CommandRegistration reg{Command{
                      "YAML file with `dimension` (2|3) and `walls:` (a case file works too)")
           ->required();
       sub.add_option("--points", a->points, "CSV file with the header x,y or x,y,z")->required();
-      sub.add_option("--h", a->h, "smoothing length h (kernel support 2h), > 0")->required();
+      sub.add_option("--h", a->h, "smoothing length h (kernel support 2h), > 0")
+          ->required()
+          ->check(kFinitePositive);
       sub.add_option("--dx", a->dx,
                      "element spacing on the walls (geometric, monolithic) or particle "
                      "spacing of the fluid lattice (volume), > 0")
-          ->required();
+          ->required()
+          ->check(kFinitePositive);
       sub.add_option("--mode", a->mode, "geometric | monolithic | volume | none")->required();
       sub.add_flag("--contour-half", a->contour_half,
                    "monolithic: the paper's rule gamma = 1/2 from the elements a point lies on");

@@ -21,6 +21,7 @@
 #include <map>
 
 #include "curvsph/cad/cad_solid_wall.hpp"
+#include "curvsph/cad/step_faces.hpp"
 #include "curvsph/cad/stl_reader.hpp"
 #include "curvsph/cad/trimmed_face_wall.hpp"
 #include "curvsph/core/error.hpp"
@@ -122,8 +123,10 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
     set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read STEP file '{}'", path));
+    check_step_surfaces(reader, path, file, key);
     reader.TransferRoots();
     shape = reader.OneShape();
+    if (!shape.IsNull()) check_step_face_count(reader, shape, path, file, key);
   } else if (ext == ".iges" || ext == ".igs") {
     IGESControl_Reader reader;
     set_session_unit_metre();

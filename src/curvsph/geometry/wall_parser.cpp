@@ -16,6 +16,7 @@
 #include "curvsph/geometry/plane.hpp"
 #include "curvsph/geometry/sphere.hpp"
 #include "curvsph/geometry/torus.hpp"
+#include "curvsph/io/quote.hpp"
 #include "curvsph/io/yaml_read.hpp"
 
 namespace curvsph {
@@ -139,7 +140,7 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
   const std::string shape_key = yaml::join(key, "shape");
   if (it == table.end())
     throw InputError(file, shape_key,
-                     fmt::format("unknown shape '{}' (shapes in {}-D: {})", shape, D,
+                     fmt::format("unknown shape {} (shapes in {}-D: {})", quote(shape), D,
                                  names_list(wall_shape_names<D>())));
   const WallFactory<D> make = factory_of<D>(*it);
   if (!make)
@@ -148,7 +149,10 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
                                  "{}-D: {})",
                                  shape, D, D, D, names_list(wall_shape_names<D>())));
   // `contact_angle` is a wetting property of any wall (read by physics/contact_angle.cpp),
-  // not a shape key: the shape factory sees the element without it.
+  // not a shape key: the shape factory sees the element without it. Its value is checked here
+  // (the schema's range), so that `geometry` and `shepard` refuse what `run` refuses.
+  if (yaml::has(node, "contact_angle"))
+    yaml::read_number(node["contact_angle"], file, yaml::join(key, "contact_angle"));
   // (Copy-constructed, never assigned: assigning a YAML::Node rebinds the node it shares.)
   const YAML::Node shape_node = yaml::has(node, "contact_angle") ? [&] {
     YAML::Node copy = YAML::Clone(node);

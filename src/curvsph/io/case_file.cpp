@@ -9,12 +9,16 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/io/case_overrides.hpp"
+#include "curvsph/io/case_schema.hpp"
+#include "curvsph/io/quote.hpp"
 #include "curvsph/io/yaml_read.hpp"
 
 namespace curvsph {
 namespace {
 
-// Reads typed values out of one YAML map, remembering the dotted key path for messages.
+// Reads typed values out of one YAML map, remembering the dotted key path for messages. Every
+// read consults the schema (io/case_schema.hpp): the table's range applies on top of the
+// reader's own checks, and in strict mode an undeclared key or another default is an error.
 class Keys {
  public:
   Keys(const YAML::Node& node, std::string file, std::string path)
@@ -31,25 +35,37 @@ class Keys {
     throw InputError(file_, k, why);
   }
 
+  // The keys allowed here: the schema's (a list that differs from the table is a strict-mode
+  // error; outside it the union is accepted, so that a key added without its row still reads).
   void allow(std::initializer_list<const char*> names) const {
     if (!node_ || !node_.IsMap()) return;
     std::set<std::string> ok(names.begin(), names.end());
+    const std::vector<std::string> declared = schema::children(path_);
+    if (schema::strict() && !declared.empty() &&
+        ok != std::set<std::string>(declared.begin(), declared.end()))
+      throw std::logic_error("schema: the keys allowed under '" + schema::pattern(path_) +
+                             "' differ from src/curvsph/io/schema_table.cpp");
+    ok.insert(declared.begin(), declared.end());
     for (const auto& kv : node_) {
       const auto name = kv.first.as<std::string>();
       if (!ok.count(name)) {
         std::string list;
         for (const auto& n : ok) list += (list.empty() ? "" : ", ") + n;
-        fail(key(name), "unknown key (allowed here: " + list + ")");
+        fail(key(clip(name)), "unknown key (allowed here: " + list + ")");
       }
     }
   }
 
   double number(const std::string& k, std::optional<double> fallback = std::nullopt) const {
+    schema::lookup(key(k));
+    if (fallback) schema::check_default(key(k), *fallback);
     if (!has(k)) {
       if (fallback) return *fallback;
       fail(key(k), "missing (a number is required)");
     }
-    return as_number(node_[k], key(k));
+    const double v = as_number(node_[k], key(k));
+    schema::check_number(file_, key(k), v);
+    return v;
   }
   double positive(const std::string& k, std::optional<double> fallback = std::nullopt) const {
     const double v = number(k, fallback);
@@ -62,22 +78,31 @@ class Keys {
     return v;
   }
   long integer(const std::string& k, std::optional<long> fallback = std::nullopt) const {
+    schema::lookup(key(k));
+    if (fallback) schema::check_default(key(k), static_cast<double>(*fallback));
     if (!has(k)) {
       if (fallback) return *fallback;
       fail(key(k), "missing (an integer is required)");
     }
     const double v = as_number(node_[k], key(k));
     if (v != std::floor(v)) fail(key(k), fmt::format("must be an integer (got {})", v));
+    // Beyond 2^53 a double no longer holds every integer, and the cast to long overflows.
+    if (std::abs(v) > 9007199254740992.0)
+      fail(key(k), fmt::format("must be an integer of magnitude <= 2^53 (got {})", v));
+    schema::check_number(file_, key(k), v);
     return static_cast<long>(v);
   }
   bool boolean(const std::string& k, bool fallback) const {
+    schema::lookup(key(k));
+    schema::check_default(key(k), fallback ? 1.0 : 0.0);
     if (!has(k)) return fallback;
     bool b = false;
     if (!node_[k].IsScalar() || !YAML::convert<bool>::decode(node_[k], b))
-      fail(key(k), "must be true or false (got '" + scalar_text(node_[k]) + "')");
+      fail(key(k), "must be true or false (got " + quote(scalar_text(node_[k])) + ")");
     return b;
   }
   std::string text(const std::string& k, std::optional<std::string> fallback = std::nullopt) const {
+    schema::lookup(key(k));
     if (!has(k)) {
       if (fallback) return *fallback;
       fail(key(k), "missing (a string is required)");
@@ -87,16 +112,19 @@ class Keys {
   }
   std::string choice(const std::string& k, std::initializer_list<const char*> options,
                      std::optional<std::string> fallback = std::nullopt) const {
+    if (fallback) schema::check_default(key(k), *fallback);
     const std::string v = text(k, fallback);
     std::string list;
     for (const char* o : options) {
+      schema::check_option(key(k), o);  // the reader's options are the table's
       if (v == o) return v;
       list += (list.empty() ? "" : " | ") + std::string(o);
     }
-    fail(key(k), "'" + v + "' is not one of: " + list);
+    fail(key(k), quote(v) + " is not one of: " + list);
   }
   // A list of exactly `dim` numbers into the first dim components of a Vec3d.
   Vec3d vector(const std::string& k, int dim, std::optional<Vec3d> fallback = std::nullopt) const {
+    schema::lookup(key(k));
     if (!has(k)) {
       if (fallback) return *fallback;
       fail(key(k), fmt::format("missing (a list of {} numbers is required)", dim));
@@ -105,11 +133,15 @@ class Keys {
     if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
       fail(key(k), fmt::format("must be a list of {} numbers (dimension {})", dim, dim));
     Vec3d v = Vec3d::Zero();
-    for (int d = 0; d < dim; ++d) v[d] = as_number(n[d], key(k) + "." + std::to_string(d));
+    for (int d = 0; d < dim; ++d) {
+      v[d] = as_number(n[d], key(k) + "." + std::to_string(d));
+      schema::check_number(file_, key(k) + "." + std::to_string(d), v[d]);
+    }
     return v;
   }
   std::array<bool, 3> flags(const std::string& k, int dim) const {
     std::array<bool, 3> out{false, false, false};
+    schema::lookup(key(k));
     if (!has(k)) return out;
     const YAML::Node n = node_[k];
     if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
@@ -133,7 +165,7 @@ class Keys {
       case YAML::NodeType::Map:
         return "a mapping";
       case YAML::NodeType::Scalar:
-        return "'" + n.Scalar() + "'";
+        return quote(n.Scalar());
       default:
         return "nothing";
     }
@@ -214,7 +246,7 @@ std::vector<std::string> output_fields(const Keys& out) {
   for (std::size_t k = 0; k < fl.size(); ++k) {
     const std::string f = fl[k].IsScalar() ? fl[k].as<std::string>() : "";
     if (std::find(known.begin(), known.end(), f) == known.end())
-      out.fail(out.key("fields") + "." + std::to_string(k), "'" + f + "' is not one of: " + list);
+      out.fail(out.key("fields") + "." + std::to_string(k), quote(f) + " is not one of: " + list);
     if (std::find(fields.begin(), fields.end(), f) == fields.end()) fields.push_back(f);
   }
   return fields;
@@ -234,6 +266,9 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
   c.root = root;
   const std::string file = path.string();
   if (!root.IsMap()) throw InputError(file, "", "the case file must be a YAML mapping");
+  // Again after the --set overrides (the file itself was checked by load_file): a line number
+  // would point into the override's text, not the file.
+  yaml::reject_duplicate_keys(root, file, false);
   const Keys top(root, file, "");
   top.allow({"name",
              "dimension",
@@ -440,7 +475,7 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
         for (std::size_t f = 0; f < c.fluids.size(); ++f)
           if (c.fluids[f].name == nm) idx[m] = static_cast<int>(f);
         if (idx[m] < 0)
-          e.fail(e.key("fluids") + "." + std::to_string(m), "'" + nm + "' is not a fluid name");
+          e.fail(e.key("fluids") + "." + std::to_string(m), quote(nm) + " is not a fluid name");
       }
       if (idx[0] == idx[1]) e.fail(e.key("fluids"), "needs two different fluids");
       s.fluid_a = idx[0];

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/io/quote.hpp"
 
 namespace curvsph {
 namespace {
@@ -30,14 +31,15 @@ bool parse_index(const std::string& s, std::size_t& out) {
 void apply_override(YAML::Node& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("--set", assignment, "expected key.path=value");
+    throw InputError("--set", clip(assignment), "expected key.path=value");
   const std::string path = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
   YAML::Node value;
   try {
     value = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError("--set", path, "value '" + text + "' is not valid YAML: " + e.msg);
+    throw InputError("--set", clip(path),
+                     "value " + quote(text) + " is not valid YAML: " + clip(e.msg));
   }
   const auto parts = split_path(path);
   // yaml-cpp nodes are handles: walking with reset() keeps references into the tree.

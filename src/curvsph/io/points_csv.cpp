@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/io/quote.hpp"
 
 namespace curvsph {
 namespace {
@@ -59,7 +60,8 @@ std::vector<VecD<D>> parse_points_csv(const std::string& text, const std::string
       }
       if (got != header)
         fail(file, line_no,
-             fmt::format("expected the header '{}' for a {}-D geometry, got '{}'", header, D, got));
+             fmt::format("expected the header '{}' for a {}-D geometry, got {}", header, D,
+                         quote(got)));
       have_header = true;
       continue;
     }
@@ -74,7 +76,7 @@ std::vector<VecD<D>> parse_points_csv(const std::string& text, const std::string
       const auto [ptr, ec] = std::from_chars(num.data(), num.data() + num.size(), v);
       if (num.empty() || ec != std::errc() || ptr != num.data() + num.size() || !std::isfinite(v))
         fail(file, line_no,
-             fmt::format("column '{}': '{}' is not a finite number", header[2 * i], c));
+             fmt::format("column '{}': {} is not a finite number", header[2 * i], quote(c)));
       p[i] = v;
     }
     points.push_back(p);

@@ -83,7 +83,13 @@ auto read_key(const YAML::Node& map, std::string_view key, const std::string& fi
   return reader(child(map, key, file, path), file, join(path, key));
 }
 
-// Loads a YAML file; a missing file or a syntax error becomes an InputError naming the file.
+// Loads a YAML file; a missing file, a syntax error or a key written twice in one map becomes an
+// InputError naming the file (and the key).
 YAML::Node load_file(const std::string& file);
+
+// yaml-cpp keeps both entries of a key written twice in one map, and node[key] answers the
+// first: the second value would be lost without a word. Throws an InputError naming `file`,
+// the key path and (with `lines`: the tree was read from `file`) the line of the second entry.
+void reject_duplicate_keys(const YAML::Node& root, const std::string& file, bool lines = true);
 
 }  // namespace curvsph::yaml

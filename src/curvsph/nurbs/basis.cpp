@@ -51,6 +51,24 @@ void validate_knots(const std::vector<double>& knots, int degree, int n_ctrl,
   }
   if (!(knots[p] < knots[expected - p - 1]))
     throw InputError(ctx.file, key, "empty parameter range (knots[degree] == knots[n])");
+  // The basis functions' derivatives scale as 1/span (P&T eq. 2.9, twice for the curvature):
+  // a span of 1e-300 overflows them, and a range far below the knots' magnitude leaves the
+  // parameter unresolved in double precision. Spans are kept above 1e-12 of the range.
+  constexpr double kMinRelativeSpan = 1e-12, kMinRange = 1e-100;
+  const double range = hi - lo;
+  if (range < kMinRange || range < kMinRelativeSpan * std::max(std::abs(lo), std::abs(hi)))
+    throw InputError(ctx.file, key,
+                     fmt::format("parameter range [{}, {}] is too narrow (at least 1e-100 and "
+                                 "1e-12 of the knots' magnitude)",
+                                 lo, hi));
+  for (std::size_t i = 0; i + 1 < expected; ++i) {
+    const double span = knots[i + 1] - knots[i];
+    if (span > 0 && span < kMinRelativeSpan * range)
+      throw InputError(ctx.file, key,
+                       fmt::format("knot span {} between indices {} and {} is below 1e-12 of the "
+                                   "parameter range {} (repeat the knot instead)",
+                                   span, i, i + 1, range));
+  }
 }
 
 int find_span(int n, int p, double u, const double* U) {

@@ -11,6 +11,10 @@
 namespace curvsph::nurbs {
 
 inline constexpr int kMaxDegree = 15;
+// Input limits (io/schema_table.cpp states them): largest / smallest weight, and the control
+// net's extent relative to its coordinates' magnitude (below: all control points coincide).
+inline constexpr double kMaxWeightRatio = 1e12;
+inline constexpr double kMinRelativeExtent = 1e-12;
 inline constexpr int kMaxOrder = kMaxDegree + 1;
 
 // Where errors are reported: file name and the dotted key prefix of the NURBS entry

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "curvsph/core/error.hpp"
@@ -25,6 +26,13 @@ NurbsCurve<D>::NurbsCurve(int degree, std::vector<Point> ctrl, std::vector<doubl
     if (!ctrl_[i].allFinite())
       throw InputError(ctx.file, ctx.key("control_points"),
                        fmt::format("control point {} is not finite", i));
+  // Weights are defined up to a common factor; beyond a ratio of 1e12 the curve collapses
+  // onto the heaviest control point in double precision.
+  const auto [wmin, wmax] = std::minmax_element(w_.begin(), w_.end());
+  if (*wmax > kMaxWeightRatio * *wmin)
+    throw InputError(ctx.file, ctx.key("weights"),
+                     fmt::format("largest / smallest weight is {:.3g}, at most {:.0g}",
+                                 *wmax / *wmin, kMaxWeightRatio));
   validate_knots(U_, p_, n, ctx, "knots");
   pw_.resize(ctrl_.size());
   Point lo = ctrl_[0], hi = ctrl_[0];
@@ -35,7 +43,10 @@ NurbsCurve<D>::NurbsCurve(int degree, std::vector<Point> ctrl, std::vector<doubl
     hi = hi.cwiseMax(ctrl_[i]);
   }
   size_ = (hi - lo).norm();
-  if (size_ == 0.0) size_ = 1.0;
+  // All control points equal: the curve is a point, with no normal or curvature.
+  if (!(size_ > kMinRelativeExtent * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())))
+    throw InputError(ctx.file, ctx.key("control_points"),
+                     "all control points coincide: the curve is a point");
   closed_ = (point(t0()) - point(t1())).norm() <= 1e-12 * size_;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "curvsph/core/error.hpp"
@@ -34,6 +35,16 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, const std::vector<std::ve
                            fmt::format("weight is {}, weights must be > 0", weights[i][j]));
     }
   }
+  if (!weights.empty()) {
+    double wmin = weights[0][0], wmax = wmin;
+    for (const auto& row : weights)
+      for (double w : row) wmin = std::min(wmin, w), wmax = std::max(wmax, w);
+    // As for curves: beyond a ratio of 1e12 the surface collapses onto one control point.
+    if (wmax > kMaxWeightRatio * wmin)
+      throw InputError(ctx.file, ctx.key("weights"),
+                       fmt::format("largest / smallest weight is {:.3g}, at most {:.0g}",
+                                   wmax / wmin, kMaxWeightRatio));
+  }
   validate_knots(U_, p_, nu_, ctx, "knots_u");
   validate_knots(V_, q_, nv_, ctx, "knots_v");
   pw_.resize(static_cast<std::size_t>(nu_ * nv_));
@@ -50,7 +61,9 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, const std::vector<std::ve
       hi = hi.cwiseMax(c);
     }
   size_ = (hi - lo).norm();
-  if (size_ == 0.0) size_ = 1.0;
+  if (!(size_ > kMinRelativeExtent * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())))
+    throw InputError(ctx.file, ctx.key("control_points"),
+                     "all control points coincide: the surface is a point");
   const double tol = 1e-12 * size_;
   closed_u_ = closed_v_ = true;
   for (int k = 0; k <= 4; ++k) {

@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "curvsph/core/error.hpp"
+#include "curvsph/io/case_schema.hpp"
+#include "curvsph/io/quote.hpp"
 
 namespace curvsph::nurbs::yaml {
 
@@ -14,26 +18,28 @@ const YAML::Node require(const YAML::Node& node, const std::string& key, const I
 }
 
 double read_double(const YAML::Node& n, const std::string& key_path, const InputContext& ctx) {
-  try {
-    if (!n.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
-    return n.as<double>();
-  } catch (const YAML::Exception&) {
-    throw InputError(ctx.file, ctx.key(key_path), "expected a number");
-  }
+  double v = 0.0;
+  // yaml-cpp's conversion accepts .nan and .inf; a geometric input must be finite.
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v))
+    throw InputError(
+        ctx.file, ctx.key(key_path),
+        "expected a finite number" + (n.IsScalar() ? ", got " + quote(n.Scalar()) : std::string()));
+  schema::check_number(ctx.file, ctx.key(key_path), v);
+  return v;
 }
 
 int read_int(const YAML::Node& node, const std::string& key, const InputContext& ctx) {
   const YAML::Node n = require(node, key, ctx);
-  try {
-    if (!n.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
-    return n.as<int>();
-  } catch (const YAML::Exception&) {
+  int v = 0;
+  if (!n.IsScalar() || !YAML::convert<int>::decode(n, v))
     throw InputError(ctx.file, ctx.key(key), "expected an integer");
-  }
+  schema::check_number(ctx.file, ctx.key(key), v);
+  return v;
 }
 
 std::vector<double> read_doubles(const YAML::Node& n, const std::string& key_path,
                                  const InputContext& ctx) {
+  schema::lookup(ctx.key(key_path));
   if (!n.IsSequence()) throw InputError(ctx.file, ctx.key(key_path), "expected a list of numbers");
   std::vector<double> out;
   for (std::size_t i = 0; i < n.size(); ++i)
@@ -58,19 +64,27 @@ std::string read_choice(const YAML::Node& node, const std::string& key,
   const std::string s = n.IsScalar() ? n.as<std::string>() : std::string();
   std::string all;
   for (const char* c : choices) {
+    schema::check_option(ctx.key(key), c);  // the reader's options are the table's
     if (s == c) return s;
     all += all.empty() ? c : std::string(" | ") + c;
   }
-  throw InputError(ctx.file, ctx.key(key), fmt::format("'{}' is not one of: {}", s, all));
+  throw InputError(ctx.file, ctx.key(key), fmt::format("{} is not one of: {}", quote(s), all));
 }
 
 void reject_unknown_keys(const YAML::Node& node, std::initializer_list<const char*> allowed,
                          const InputContext& ctx) {
+  if (schema::strict())
+    for (const char* a : allowed) schema::lookup(ctx.key(a));
   for (const auto& kv : node) {
     const std::string k = kv.first.as<std::string>();
     bool ok = false;
-    for (const char* a : allowed) ok = ok || k == a;
-    if (!ok) throw InputError(ctx.file, ctx.key(k), "unknown key");
+    std::string list;
+    for (const char* a : allowed) {
+      ok = ok || k == a;
+      list += (list.empty() ? "" : ", ") + std::string(a);
+    }
+    if (!ok)
+      throw InputError(ctx.file, ctx.key(clip(k)), "unknown key (allowed here: " + list + ")");
   }
 }
 

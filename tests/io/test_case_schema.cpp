@@ -133,9 +133,10 @@ TEST(CaseSchema, EveryShippedCaseReadsInStrictMode) {
 // Every key written in a shipped case (analysis and initial parameters included, which their
 // analyses read themselves) has its row: the walk visits every map key and list element.
 void expect_declared(const YAML::Node& node, const std::string& path, const std::string& file) {
-  if (!path.empty())
+  if (!path.empty()) {
     EXPECT_TRUE(schema::find(path) || schema::find_element(path))
         << file << ": " << path << " (" << schema::pattern(path) << ") has no row";
+  }
   if (node.IsMap())
     for (const auto& kv : node)
       expect_declared(kv.second, yaml::join(path, kv.first.Scalar()), file);

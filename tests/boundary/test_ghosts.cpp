@@ -12,6 +12,7 @@
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
+#include "curvsph/geometry/moving_wall.hpp"
 #include "curvsph/geometry/plane.hpp"
 
 using namespace curvsph;
@@ -156,11 +157,12 @@ TEST(GhostSet, BoxCorner3DAndPlanesMeeting) {
 TEST(GhostSet, MovingWallVelocities) {
   // Plane y = 0 moving with u_w = (2, 0): no-slip u_g = 2 u_w - u; free slip keeps the
   // tangential relative velocity and reflects the normal one.
-  auto plane = std::make_shared<PlaneWall<2>>(Vec2d(0, 0), Vec2d(0, 1));
-  plane->motion.kind = WallMotion<2>::Kind::translate;
-  plane->motion.velocity = Vec2d(2, 0);
+  WallMotion<2> slide;
+  slide.kind = WallMotion<2>::Kind::translate;
+  slide.velocity = Vec2d(2, 0);
   WallSet<2> walls;
-  walls.add(plane);
+  walls.add(std::make_shared<MovingWall<2>>(
+      std::make_shared<PlaneWall<2>>(Vec2d(0, 0), Vec2d(0, 1)), slide));
   const std::vector<Vec2> x{Vec2(0.3, 0.05)};
   const std::vector<Vec2> v{Vec2(1, 0.5)};
   GhostSet<2> g;
@@ -171,11 +173,12 @@ TEST(GhostSet, MovingWallVelocities) {
   EXPECT_NEAR((g.v[0] - Vec2(1, -0.5)).norm(), 0, 1e-12);
 
   // Rotating circle tank (omega = 1): wall speed at the foot (1, 0) is (0, 1).
-  auto circle = std::make_shared<CircleWall>(Vec2d(0, 0), 1.0, FluidSide::inside);
-  circle->motion.kind = WallMotion<2>::Kind::rotate;
-  circle->motion.omega = 1.0;
+  WallMotion<2> spin;
+  spin.kind = WallMotion<2>::Kind::rotate;
+  spin.omega = 1.0;
   WallSet<2> tank;
-  tank.add(circle);
+  tank.add(std::make_shared<MovingWall<2>>(
+      std::make_shared<CircleWall>(Vec2d(0, 0), 1.0, FluidSide::inside), spin));
   const std::vector<Vec2> xc{Vec2(0.9, 0.0)};
   const std::vector<Vec2> vc{Vec2(0.0, 0.5)};
   g.build(xc, vc, tank, options<2>(GhostMapKind::density_preserving, 0.2));

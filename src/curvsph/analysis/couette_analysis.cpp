@@ -54,7 +54,7 @@ CouetteSetup couette_from_case(const Case& c, const std::string& key) {
   const CircleWall* outer = nullptr;
   std::size_t k_in = 0, k_out = 0;
   for (std::size_t k = 0; k < walls.size(); ++k) {
-    const auto* circle = dynamic_cast<const CircleWall*>(&walls[k]);
+    const auto* circle = dynamic_cast<const CircleWall*>(&walls[k].body());
     if (!circle) continue;
     if (circle->side() == FluidSide::outside) {
       if (inner) throw InputError(file, key, "more than one circle wall with fluid outside");
@@ -79,8 +79,9 @@ CouetteSetup couette_from_case(const Case& c, const std::string& key) {
   s.center = center;
   s.flow.r_in = inner->radius();
   s.flow.r_out = outer->radius();
-  s.flow.omega_in = rotation_rate(*inner, center, file, fmt::format("walls.{}.motion", k_in));
-  s.flow.omega_out = rotation_rate(*outer, center, file, fmt::format("walls.{}.motion", k_out));
+  s.flow.omega_in = rotation_rate(walls[k_in], center, file, fmt::format("walls.{}.motion", k_in));
+  s.flow.omega_out =
+      rotation_rate(walls[k_out], center, file, fmt::format("walls.{}.motion", k_out));
   return s;
 }
 

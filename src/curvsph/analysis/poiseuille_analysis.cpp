@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "curvsph/core/error.hpp"
+#include "curvsph/geometry/moving_wall.hpp"
 #include "curvsph/geometry/plane.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 
@@ -21,7 +22,8 @@ ChannelSetup channel_from_case(const Case& c, const std::string& key) {
   const WallSet<2> walls = parse_walls<2>(wn, file, c.file.parent_path());
   std::vector<std::pair<const PlaneWall<2>*, std::size_t>> planes;
   for (std::size_t k = 0; k < walls.size(); ++k)
-    if (const auto* p = dynamic_cast<const PlaneWall<2>*>(&walls[k])) planes.push_back({p, k});
+    if (const auto* p = dynamic_cast<const PlaneWall<2>*>(&walls[k].body()))
+      planes.push_back({p, k});
   if (planes.size() != 2)
     throw InputError(file, key,
                      fmt::format("needs exactly two plane walls (the case has {})", planes.size()));
@@ -49,10 +51,13 @@ ChannelSetup channel_from_case(const Case& c, const std::string& key) {
   }
   double* speeds[2] = {&s.flow.u0, &s.flow.u1};
   for (int w = 0; w < 2; ++w) {
-    const Wall<2>& wall = *planes[w].first;
-    if (wall.motion.kind == WallMotion<2>::Kind::rotate)
-      throw InputError(file, fmt::format("walls.{}.motion", planes[w].second),
-                       "a channel wall may translate along itself, not rotate");
+    const Wall<2>& wall = walls[planes[w].second];  // the motion is the (moving) wall's
+    if (wall.motion.kind == WallMotion<2>::Kind::rotate ||
+        wall.motion.kind == WallMotion<2>::Kind::oscillate ||
+        (wall.moves() && !motion_leaves_shape(wall.body(), wall.motion)))
+      throw InputError(
+          file, fmt::format("walls.{}.motion", planes[w].second),
+          "a channel wall may translate along itself at a constant speed, not rotate or oscillate");
     *speeds[w] = wall.motion.velocity_at(a.point()).dot(s.along);
   }
   return s;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,15 +50,22 @@ struct ParamSeed {
   bool valid = false;
 };
 
-// Rigid wall motion (DESIGN.md §3 `motion:`), evaluated at a foot point.
+// Rigid wall motion (DESIGN.md §3 `motion:`): what the case file says. The geometry moves
+// with it (geometry/moving_wall.hpp); velocity_at gives the velocity of the wall point at x at
+// time t (rigid motion: v(t) + omega x (x - c(t))).
 template <int D>
 struct WallMotion {
-  enum class Kind { none, rotate, translate } kind = Kind::none;
+  enum class Kind { none, rotate, translate, oscillate } kind = Kind::none;
   double omega = 0.0;                     // rotate (2-D: about z; 3-D: about `axis`)
   VecD<D> center = VecD<D>::Zero();       // rotate
   VecD<3> axis = VecD<3>(0.0, 0.0, 1.0);  // rotate, 3-D
   VecD<D> velocity = VecD<D>::Zero();     // translate
-  VecD<D> velocity_at(const VecD<D>& x) const;
+  VecD<D> amplitude = VecD<D>::Zero();    // oscillate: x(t) = x0 + A sin(2 pi F t + phi)
+  double frequency = 0.0;                 // oscillate, F in Hz
+  double phase = 0.0;                     // oscillate, phi in radians
+  VecD<D> velocity_at(const VecD<D>& x, double t = 0.0) const;
+  // Displacement of the body at time t (translate, oscillate; zero for rotate).
+  VecD<D> displacement(double t) const;
 };
 
 template <int D>
@@ -81,6 +89,18 @@ class Wall {
   // with it). False for open walls, whose sign flips beyond their edges.
   virtual bool closed_surface() const { return false; }
 
+  // Moving walls (geometry/moving_wall.hpp). A static wall answers: never moves, velocity 0,
+  // and is its own body; set_time does nothing. The solver calls WallSet::set_time at every
+  // time at which it evaluates the walls (each stage of the integrator).
+  virtual bool moves() const { return false; }
+  virtual void set_time(double /*t*/) {}
+  // Velocity of the wall point at x (x on the wall) at the time of the last set_time.
+  virtual VecD<D> velocity(const VecD<D>& /*x*/) const { return VecD<D>::Zero(); }
+  // The wall in its own body frame (the shape as the case file gives it): what a shape-specific
+  // consumer (boundary elements, analyses) casts to. A static wall is its own body.
+  virtual const Wall<D>& body() const { return *this; }
+
+  // The motion the case file gave (Kind::none for a static wall).
   WallMotion<D> motion;
 };
 
@@ -96,6 +116,19 @@ class WallSet {
   bool empty() const { return walls_.empty(); }
   const Wall<D>& operator[](std::size_t i) const { return *walls_[i]; }
   const std::vector<WallPtr<D>>& walls() const { return walls_; }
+  // Whether any wall moves (the solver then calls set_time at every stage).
+  bool any_moves() const {
+    for (const auto& w : walls_)
+      if (w->moves()) return true;
+    return false;
+  }
+  // Places every moving wall at time t. The walls are shared, const-qualified pointers, but
+  // each wall was created non-const (make_shared) by its factory: casting the const away to
+  // move it is well defined. Not thread-safe against concurrent queries (call between passes).
+  void set_time(double t) const {
+    for (const auto& w : walls_)
+      if (w->moves()) const_cast<Wall<D>&>(*w).set_time(t);
+  }
 
   WallPoint<D> closest(const VecD<D>& x) const {
     WallPoint<D> best;
@@ -115,10 +148,25 @@ class WallSet {
 };
 
 template <int D>
-VecD<D> WallMotion<D>::velocity_at(const VecD<D>& x) const {
+VecD<D> WallMotion<D>::displacement(double t) const {
+  switch (kind) {
+    case Kind::translate:
+      return velocity * t;
+    case Kind::oscillate:
+      return amplitude * std::sin(2.0 * std::numbers::pi * frequency * t + phase);
+    default:
+      return VecD<D>::Zero();
+  }
+}
+
+template <int D>
+VecD<D> WallMotion<D>::velocity_at(const VecD<D>& x, double t) const {
   switch (kind) {
     case Kind::translate:
       return velocity;
+    case Kind::oscillate:  // d/dt of A sin(2 pi F t + phi)
+      return amplitude * (2.0 * std::numbers::pi * frequency *
+                          std::cos(2.0 * std::numbers::pi * frequency * t + phase));
     case Kind::rotate: {
       if constexpr (D == 2) {
         const VecD<2> r = x - center;

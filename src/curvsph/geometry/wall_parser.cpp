@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 #include "curvsph/cad/cad_import.hpp"
@@ -11,6 +12,7 @@
 #include "curvsph/geometry/circle.hpp"
 #include "curvsph/geometry/cylinder.hpp"
 #include "curvsph/geometry/ellipse.hpp"
+#include "curvsph/geometry/moving_wall.hpp"
 #include "curvsph/geometry/nurbs_curve_wall.hpp"
 #include "curvsph/geometry/nurbs_surface_wall.hpp"
 #include "curvsph/geometry/plane.hpp"
@@ -82,13 +84,6 @@ std::string names_list(const std::vector<std::string>& names) {
   return s;
 }
 
-// The factories hand back pointers to const walls, but each wall is a fresh object created
-// non-const by make_shared and not yet shared, so setting its motion here is well defined.
-template <int D>
-void attach_motion(const WallPtr<D>& wall, const WallMotion<D>& motion) {
-  const_cast<Wall<D>&>(*wall).motion = motion;
-}
-
 }  // namespace
 
 template <int D>
@@ -103,12 +98,13 @@ std::vector<std::string> wall_shape_names() {
 template <int D>
 WallMotion<D> parse_wall_motion(const YAML::Node& node, const std::string& file,
                                 const std::string& key) {
-  yaml::check_keys(node, {"rotate", "translate"}, file, key);
-  if (node.size() != 1) throw InputError(file, key, "expected exactly one of rotate | translate");
+  yaml::check_keys(node, {"rotate", "translate", "oscillate"}, file, key);
+  if (node.size() != 1)
+    throw InputError(file, key, "expected exactly one of rotate | translate | oscillate");
   WallMotion<D> m;
   if (yaml::has(node, "rotate")) {
     const std::string k = yaml::join(key, "rotate");
-    const YAML::Node r = node["rotate"];
+    const YAML::Node r = yaml::child(node, "rotate", file, key);
     if constexpr (D == 2)
       yaml::check_keys(r, {"omega", "center"}, file, k);
     else
@@ -116,16 +112,31 @@ WallMotion<D> parse_wall_motion(const YAML::Node& node, const std::string& file,
     m.kind = WallMotion<D>::Kind::rotate;
     m.omega = yaml::read_key(r, "omega", file, k, yaml::read_number);
     m.center = yaml::read_key(r, "center", file, k, yaml::read_vec<D>);
-    if constexpr (D == 3)
-      if (yaml::has(r, "axis"))
-        m.axis = yaml::read_key(r, "axis", file, k, yaml::read_direction<3>);
-  } else {
+    // 3-D: the axis is required (a rotation about a guessed z would move the wall silently
+    // the wrong way).
+    if constexpr (D == 3) m.axis = yaml::read_key(r, "axis", file, k, yaml::read_direction<3>);
+  } else if (yaml::has(node, "translate")) {
     const std::string k = yaml::join(key, "translate");
     const YAML::Node t = yaml::child(node, "translate", file, key);
     yaml::check_keys(t, {"velocity"}, file, k);
     m.kind = WallMotion<D>::Kind::translate;
     m.velocity = yaml::read_key(t, "velocity", file, k, yaml::read_vec<D>);
+  } else {
+    const std::string k = yaml::join(key, "oscillate");
+    const YAML::Node o = yaml::child(node, "oscillate", file, key);
+    yaml::check_keys(o, {"amplitude", "frequency", "phase"}, file, k);
+    m.kind = WallMotion<D>::Kind::oscillate;
+    m.amplitude = yaml::read_key(o, "amplitude", file, k, yaml::read_vec<D>);
+    m.frequency = yaml::read_key(o, "frequency", file, k, yaml::read_number);
+    if (!(m.frequency >= 0) || !std::isfinite(m.frequency))
+      throw InputError(file, yaml::join(k, "frequency"),
+                       fmt::format("must be a finite number >= 0 (got {})", m.frequency));
+    if (yaml::has(o, "phase")) m.phase = yaml::read_key(o, "phase", file, k, yaml::read_number);
   }
+  const auto finite = [](const auto& v) { return v.allFinite(); };
+  if (!std::isfinite(m.omega) || !std::isfinite(m.phase) || !finite(m.center) ||
+      !finite(m.velocity) || !finite(m.amplitude))
+    throw InputError(file, key, "motion values must be finite");
   return m;
 }
 
@@ -163,7 +174,8 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
   std::vector<WallPtr<D>> walls = make(WallSource{shape_node, file, key, base_dir});
   if (yaml::has(node, "motion")) {
     const WallMotion<D> m = parse_wall_motion<D>(node["motion"], file, yaml::join(key, "motion"));
-    for (const auto& w : walls) attach_motion(w, m);
+    // The geometry moves (geometry/moving_wall.hpp); static walls stay undecorated.
+    for (auto& w : walls) w = std::make_shared<MovingWall<D>>(std::move(w), m);
   }
   return walls;
 }

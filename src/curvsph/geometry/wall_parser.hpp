@@ -2,7 +2,9 @@
 // The `walls:` list of a case or geometry file → a WallSet (DESIGN.md §3 case files).
 //
 // Each element is a map with `shape` and the shape's own keys, plus an optional
-//   motion: {rotate: {omega, center[, axis (3-D)]}} | {translate: {velocity}}
+//   motion: {rotate: {omega, center[, axis (3-D, required)]}} | {translate: {velocity}}
+//           | {oscillate: {amplitude, frequency[, phase]}}
+// which moves the wall's geometry (geometry/moving_wall.hpp).
 // Shapes are dispatched through one table in wall_parser.cpp (name → factory per dimension);
 // a new shape is one new file with its factory plus one line in that table.
 // Every error is an InputError naming `file`, the key path (`walls.1.radius`) and the reason.

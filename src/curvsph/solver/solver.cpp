@@ -357,6 +357,7 @@ void Solver<D>::restart(Particles<D> state, double t) {
 
 template <int D>
 void Solver<D>::initialize() {
+  walls_.set_time(t_);  // moving walls where they are at the start (a restart's time)
   // Every rank holds every particle before distribute(): the count and the removal box are
   // global.
   initial_count_ = static_cast<std::int64_t>(P_.size());
@@ -504,6 +505,10 @@ void Solver<D>::step(Real dt_cap) {
       cells_.wrap(P_.x[i]);
     });
   }
+  // Kick-drift-kick evaluates the rates at x^{n+1}: moving walls are placed at t^{n+1} before
+  // the pre-pass, so ghosts, elements, wall velocities and the penetration check and contact
+  // of this step all see the wall where the particles are.
+  walls_.set_time(t_ + static_cast<double>(dt_));
   remove_strays();
   decomp_.migrate(P_);        // [mpi] to the new owners, re-bisecting when unbalanced
   decomp_.exchange_halo(P_);  // [mpi]

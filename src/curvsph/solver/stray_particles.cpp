@@ -40,7 +40,7 @@ WallFix project_out_of_walls(const WallSet<D>& walls, Vec<D>& x, Vec<D>& v, doub
       if (fix == WallFix::none) fix = WallFix::contact;
       x = (wp.foot + depth * wp.normal).template cast<Real>();
       const Vec<D> n = wp.normal.template cast<Real>();
-      const Vec<D> uw = w.motion.velocity_at(wp.foot).template cast<Real>();
+      const Vec<D> uw = w.velocity(wp.foot).template cast<Real>();
       const Real un = (v - uw).dot(n);
       if (un < 0) v -= un * n;  // only the part that carries it into the wall
       any = true;

@@ -18,6 +18,7 @@ StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_stu
 StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wall_study.cpp
 StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
 StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surface_study.cpp
+StudyResult run_moving_cylinder_study(const StudyContext& ctx);   // moving_cylinder_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -56,6 +57,9 @@ const std::vector<Study>& validation_studies() {
       {"throughput",
        "Particle-steps per second: 3-D dam break (DualSPHysics reference), 10^6 box, Couette",
        &run_throughput_study},
+      {"moving_cylinder",
+       "Walls that move: towed vs still cylinder (Galilean), oscillating cylinder (Dütsch 1998)",
+       &run_moving_cylinder_study},
   };
   return studies;
 }

@@ -87,7 +87,7 @@ struct Generator {
       n = set[r]->normal;
       d = (x - set[r]->foot).dot(n);
       foot = x - d * n;
-      const VecD<D> uw = walls[set[r]->wall].motion.velocity_at(foot);
+      const VecD<D> uw = walls[set[r]->wall].velocity(foot);
       // For free_slip walls u and u_slip are the same sequence.
       u_slip = ghost_velocity<D>(GhostVelocity::free_slip, u_slip, uw, n, 1.0);
       u = opt.velocity == GhostVelocity::free_slip ? u_slip
@@ -128,7 +128,7 @@ struct Generator {
             VecD<D> foot = x;
             foot[a] = s == 0 ? lo[a] : hi[a];
             const VecD<D> n = VecD<D>::Unit(a) * (s == 0 ? 1.0 : -1.0);
-            const VecD<D> uw = box->motion.velocity_at(foot);
+            const VecD<D> uw = box->velocity(foot);
             const auto [ug, ug_slip] = images(u, uw, n, 1.0);
             emit(out, i, k, foot - d * n, ug, ug_slip, 1.0, d, d, foot, n, 1);
             if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k};
@@ -151,7 +151,7 @@ struct Generator {
         no_root = true;
         continue;
       }
-      const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
+      const VecD<D> uw = walls[k].velocity(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
       emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
            p.normal, 1);

@@ -152,6 +152,7 @@
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
+#include "curvsph/geometry/moving_wall.hpp"
 
 namespace curvsph {
 
@@ -189,52 +190,71 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
     const VecD<D> grow = VecD<D>::Constant(4 * c.h()) + 0.5 * bounds.sizes();
     bounds = Bounds<D>(bounds.min() - grow, bounds.max() + grow);
   }
-  el_ = BoundaryElements<D>();
-  std::vector<int> wall_of;
+  // Elements are generated once, in each wall's body frame (a moving wall's shape as given;
+  // geometry/moving_wall.hpp), and placed rigidly in the world by place_elements().
+  el_body_ = BoundaryElements<D>();
+  wall_of_.clear();
+  geometry_moves_ = false;
   for (std::size_t k = 0; k < walls_.size(); ++k) {
     BoundaryElements<D> e;
     try {
-      e = elements_from_wall<D>(walls_[k], c.dx, bounds);
+      e = elements_from_wall<D>(walls_[k].body(), c.dx, bounds);
     } catch (const std::invalid_argument& err) {
       throw InputError(c.file_name(), "walls." + std::to_string(k), err.what());
     }
     // A wall drawn past a periodic seam would be counted twice (itself and its image).
     if (c.has_domain && (c.periodic[0] || c.periodic[1] || c.periodic[2]))
       e = clip_to_periodic_domain<D>(e, c.domain_min.head<D>(), c.domain_max.head<D>(), c.periodic);
-    wall_of.insert(wall_of.end(), e.size(), static_cast<int>(k));
-    el_.append(e);
+    wall_of_.insert(wall_of_.end(), e.size(), static_cast<int>(k));
+    el_body_.append(e);
+    const auto* mw = dynamic_cast<const MovingWall<D>*>(&walls_[k]);
+    geometry_moves_ |= mw && mw->geometry_moves();
   }
-  const std::size_t m = el_.size();
+  const std::size_t m = el_body_.size();
   ex_.resize(m);
   en_.resize(m);
   eu_.resize(m);
   ea_.resize(m);
-  double rmax = 0;
+  double rmax = 0;  // invariant under the rigid motions
   for (std::size_t b = 0; b < m; ++b) {
-    ex_[b] = el_.centre[b].template cast<Real>();
-    en_[b] = el_.normal[b].template cast<Real>();
-    ea_[b] = static_cast<Real>(el_.area[b]);
-    eu_[b] = walls_[static_cast<std::size_t>(wall_of[b])]
-                 .motion.velocity_at(el_.centre[b])
-                 .template cast<Real>();
-    rmax = std::max(rmax, el_.bounding_radius(b));
+    ea_[b] = static_cast<Real>(el_body_.area[b]);
+    rmax = std::max(rmax, el_body_.bounding_radius(b));
   }
   elem_cells_.configure(W_.support + static_cast<Real>(rmax), c.domain_min, c.domain_max,
                         c.periodic);
-  elem_cells_.build(ex_);
   p_wall_.assign(m, 0);
-  wq_ = element_quadrature(el_);
-  if (mode_ == ShepardMode::geometric) geometric_ = GeometricShepard<D>(el_, W_.h, quad_);
+  place_elements();
   built_ = true;
 }
 
 template <int D>
+void IntegralsBoundary<D>::place_elements() {
+  // Body frame -> world at the walls' current time: x = R x_body + s, normals rotated; area,
+  // curvature and gap are invariant. Static walls' elements are copied unchanged.
+  el_ = el_body_;
+  const std::size_t m = el_.size();
+  for (std::size_t b = 0; b < m; ++b) {
+    const auto* mw =
+        dynamic_cast<const MovingWall<D>*>(&walls_[static_cast<std::size_t>(wall_of_[b])]);
+    if (mw && mw->geometry_moves()) {
+      el_.centre[b] = mw->to_world(el_body_.centre[b]);
+      el_.normal[b] = mw->rotation() * el_body_.normal[b];
+      for (int v = 0; v < el_.vertex_count[b]; ++v)
+        el_.vertices[b][static_cast<std::size_t>(v)] =
+            mw->to_world(el_body_.vertices[b][static_cast<std::size_t>(v)]);
+    }
+    ex_[b] = el_.centre[b].template cast<Real>();
+    en_[b] = el_.normal[b].template cast<Real>();
+    eu_[b] =
+        walls_[static_cast<std::size_t>(wall_of_[b])].velocity(el_.centre[b]).template cast<Real>();
+  }
+  elem_cells_.build(ex_);
+  wq_ = element_quadrature(el_);
+  if (mode_ == ShepardMode::geometric) geometric_ = GeometricShepard<D>(el_, W_.h, quad_);
+}
+
+template <int D>
 void IntegralsBoundary<D>::check_setup(const Particles<D>& P, const std::string& file) {
-  for (std::size_t k = 0; k < walls_.size(); ++k)
-    if (walls_[k].motion.kind == WallMotion<D>::Kind::translate)
-      throw InputError(file, "walls." + std::to_string(k) + ".motion",
-                       "boundary integrals keep the elements fixed: a translating wall is not "
-                       "supported (rotation about a fixed centre is)");
   build_elements(P);
   if (el_.size() == 0)
     throw InputError(file, "boundary.method", "integrals need walls (no boundary elements)");
@@ -242,7 +262,17 @@ void IntegralsBoundary<D>::check_setup(const Particles<D>& P, const std::string&
 
 template <int D>
 void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
-  if (!built_) build_elements(P);
+  if (!built_) {
+    build_elements(P);
+  } else if (geometry_moves_) {
+    place_elements();  // the walls were set to this stage's time by the solver
+  } else if (walls_.any_moves()) {
+    // Walls that slide along themselves: the elements stay, their velocity may change in time.
+    for (std::size_t b = 0; b < el_.size(); ++b)
+      eu_[b] = walls_[static_cast<std::size_t>(wall_of_[b])]
+                   .velocity(el_.centre[b])
+                   .template cast<Real>();
+  }
   const Index n = static_cast<Index>(P.size());
   gamma_.resize(P.size());
   near_.resize(P.size());

@@ -54,6 +54,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   // Wall time of the gamma computation in prepare(): thread-seconds over the team size.
   double shepard_seconds_ = 0;
   void build_elements(const Particles<D>& P);
+  // Places the body-frame elements of moving walls at the walls' current time (and refreshes
+  // centres, normals, velocities, the element cell list and the element quadratures).
+  void place_elements();
   // The pair list of prepare() must belong to the particles passed to the wall passes.
   void check_prepared(const Particles<D>& P) const;
   // Calls f(b, r_ib = x_i - x_b (periodic image applied), r2) for the elements whose
@@ -79,7 +82,10 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   Real dx_ = 0;
   bool built_ = false;
 
-  BoundaryElements<D> el_;
+  BoundaryElements<D> el_;       // in the world, at the walls' current time
+  BoundaryElements<D> el_body_;  // as generated, in each wall's body frame
+  std::vector<int> wall_of_;     // the wall of every element
+  bool geometry_moves_ = false;  // some wall's geometry moves: elements re-placed every prepare
   std::vector<Vec<D>> ex_, en_, eu_;  // element centre, normal (into the fluid), velocity
   std::vector<Real> ea_;              // element area (length in 2-D)
   CellList<D> elem_cells_;            // over element centres, radius 2h + max element radius

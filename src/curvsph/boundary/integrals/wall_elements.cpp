@@ -17,6 +17,7 @@
 #include "curvsph/geometry/circle.hpp"
 #include "curvsph/geometry/cylinder.hpp"
 #include "curvsph/geometry/ellipse.hpp"
+#include "curvsph/geometry/moving_wall.hpp"
 #include "curvsph/geometry/plane.hpp"
 #include "curvsph/geometry/shape_util.hpp"
 #include "curvsph/geometry/sphere.hpp"
@@ -363,6 +364,19 @@ template <int D>
 BoundaryElements<D> elements_from_wall(const Wall<D>& wall, double dx, const Bounds<D>& bounds) {
   if (!(dx > 0)) throw std::invalid_argument("boundary elements: dx must be > 0");
   BoundaryElements<D> out;
+  // A moving wall: its body's elements, placed where the wall is now (rigidly: areas,
+  // curvatures and gaps are invariant).
+  if (const auto* mw = dynamic_cast<const MovingWall<D>*>(&wall)) {
+    out = elements_from_wall<D>(mw->body(), dx, bounds);
+    for (std::size_t b = 0; b < out.size(); ++b) {
+      out.centre[b] = mw->to_world(out.centre[b]);
+      out.normal[b] = mw->rotation() * out.normal[b];
+      for (int v = 0; v < out.vertex_count[b]; ++v)
+        out.vertices[b][static_cast<std::size_t>(v)] =
+            mw->to_world(out.vertices[b][static_cast<std::size_t>(v)]);
+    }
+    return out;
+  }
   for (const Discretizer<D> f : discretizers<D>())
     if (f(wall, dx, bounds, out)) return out;
   throw std::invalid_argument("no boundary-element generator for the wall '" + wall.describe() +

@@ -18,6 +18,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/io/case_overrides.hpp"
+#include "curvsph/io/pressure_form.hpp"
 #include "curvsph_build_paths.hpp"
 
 namespace curvsph {
@@ -162,6 +163,21 @@ TEST(CaseFile, WrongChoice) {
   expect_error([](YAML::Node& r) { r["density"]["method"] = "sph"; }, "density.method",
                "summation | continuity");
   expect_error([](YAML::Node& r) { r["boundary"]["method"] = "walls"; }, "boundary.method");
+}
+
+// pressure_gradient (physics/pressure_gradient.hpp): symmetric unless set, confined or not
+// (the difference form alone clumps the particles: throttled_pipe/findings.md).
+TEST(CaseFile, PressureGradientKey) {
+  EXPECT_FALSE(pressure_difference(read_case(valid(), "dir/case.yaml")));
+  YAML::Node g = valid();
+  g["domain"]["periodic"] = YAML::Load("[true, false]");
+  g["gravity"] = YAML::Load("[0, -9.81]");
+  EXPECT_FALSE(pressure_difference(read_case(g, "dir/case.yaml")));
+  YAML::Node d = valid();
+  d["pressure_gradient"] = "difference";
+  EXPECT_TRUE(pressure_difference(read_case(d, "dir/case.yaml")));
+  expect_error([](YAML::Node& r) { r["pressure_gradient"] = "consistent"; }, "pressure_gradient",
+               "symmetric | difference");
 }
 
 TEST(CaseFile, MissingRequiredKeys) {

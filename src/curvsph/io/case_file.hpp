@@ -125,6 +125,9 @@ struct Case {
   // transport_velocity.background_pressure: p_b of the transport-velocity formulation
   // (physics/transport_velocity.hpp; 0: off)
   double transport_pb = 0;
+  // pressure_gradient: difference (p_j - p_i) instead of symmetric (p_j + p_i)
+  // (physics/pressure_gradient.hpp).
+  bool pressure_difference = false;
   // artificial_viscosity.alpha: the delta-SPH momentum diffusion (physics/artificial_viscosity.hpp;
   // 0: off, the default)
   double artificial_alpha = 0;

@@ -71,6 +71,7 @@ const Row kRows[] = {
 {"artificial_viscosity", "map", "", "optional", "-", "delta-SPH momentum diffusion"},
 {"artificial_viscosity.alpha", "number", "[0, inf)", "0", "-", "artificial viscosity coefficient"},
 
+{"pressure_gradient", "choice: symmetric | difference", "", "symmetric", "-", "pressure term: p_j + p_i (Barker's symmetric form) or p_j - p_i (no force from a uniform background pressure; needs shifting or the transport velocity)"},
 {"transport_velocity", "map", "", "optional", "-", "Adami et al.'s transport velocity (summation density, no shifting)"},
 {"transport_velocity.background_pressure", "number", "(0, inf)", "derived: rho0 c0^2 of the stiffest fluid", "Pa", "background pressure p_b of the transport velocity"},
 

@@ -16,6 +16,7 @@
 #include "curvsph/parallel/pair_rule.hpp"
 #include "curvsph/physics/fluid_terms.hpp"
 #include "curvsph/physics/pair_factors.hpp"
+#include "curvsph/physics/pressure_gradient.hpp"
 
 namespace curvsph {
 
@@ -33,11 +34,14 @@ void update_pressure(Particles<D>& P, const FluidParams<D>& F) {
 //   u_j), m_i a_i += X_ij,  m_j a_j += X_ji = -X_ij
 // (r_ji = -r_ij, u_j - u_i = -(u_i - u_j), the bracketed factors and the harmonic mean mu_ij
 // are symmetric): pair forces are equal and opposite, momentum is conserved pair by pair.
+// With `diff` (pressure_gradient: difference) the pressure part is pressure_gradient.hpp's
+// -(p_j - p_i)/sigma_j^2 grad_i W_ij (zeroth-order consistent, not pairwise conservative).
 // `pf` is the caller's reusable scratch (filled here); [mpi] `rule`: which pairs this rank
 // computes and which particles it completes (parallel/pair_rule.hpp).
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                  const FluidParams<D>& F, PairFactors<D>& pf, const PairRuleArg<D>& rule = {}) {
+                  const FluidParams<D>& F, PairFactors<D>& pf, const PairRuleArg<D>& rule = {},
+                  bool diff = false) {
   const Index n = rule.computed(P);
   pf.fill_forces(P, F);
   const Real* inv_s2 = pf.inv_s2.data();
@@ -53,6 +57,15 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
           const Real f = W.gradient_factor(std::sqrt(r2));
           const Real mu_i = mu[i], mu_j = mu[j];
           const Real mu_ij = mu_i == mu_j ? mu_i : 2 * mu_i * mu_j / (mu_i + mu_j);
+          if (diff) {  // pressure_gradient: difference (pressure_gradient.hpp)
+            const Vec<D> V = f * mu_ij * (inv_s2[j] + inv_s2[i]) * (P.v[i] - P.v[j]);
+            const Vec<D> g = f * r;
+            const PairPressure<D> pp =
+                pair_pressure<D>(true, P.p[i], P.p[j], inv_s2[i], inv_s2[j], g);
+            a_i += V + pp.pi;
+            if (rule.template adds_to<M>(j, n)) P.a[j] += pp.pj - V;
+            return;
+          }
           const Vec<D> X =
               f * (mu_ij * (inv_s2[j] + inv_s2[i]) * (P.v[i] - P.v[j]) - (p_s2[j] + p_s2[i]) * r);
           a_i += X;
@@ -69,9 +82,9 @@ void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>
 // Convenience form with its own scratch (allocates: tests and one-off calls).
 template <int D>
 void fluid_forces(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                  const FluidParams<D>& F) {
+                  const FluidParams<D>& F, bool difference = false) {
   PairFactors<D> pf;
-  fluid_forces(P, cells, W, F, pf);
+  fluid_forces(P, cells, W, F, pf, {}, difference);
 }
 
 // Gravity and Vela Vela's driving term (eq. 36), added after the pair and wall terms.

@@ -6,6 +6,7 @@
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/boundary/wall_force.hpp"
 #include "curvsph/core/parallel.hpp"
+#include "curvsph/io/pressure_form.hpp"
 
 namespace curvsph {
 namespace {
@@ -24,6 +25,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
+    difference_ = pressure_difference(c);
     Vec3d lo = c.domain_min, hi = c.domain_max;
     cells_.configure(W_.support, lo, hi, c.periodic);
   }
@@ -112,6 +114,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     const WallForce wf = wall_force_;
     const bool hydrostatic = hydrostatic_;
     const bool no_tension = no_tension_;
+    const bool difference = difference_;
     const Vec<D> grav = F_.gravity;
     parallel_for(static_cast<Index>(P.size()), [&](Index i) {
       const Real si = P.sigma[i];
@@ -130,8 +133,12 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
-        if (no_tension) pg = std::max(pg, Real(0));
-        grad_p += bg * (pg * inv_sg2 + pi_s2) * f * r;
+        if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
+          grad_p += bg * ((pg - P.p[i]) * inv_sg2) * f * r;
+        } else {
+          if (no_tension) pg = std::max(pg, Real(0));
+          grad_p += bg * (pg * inv_sg2 + pi_s2) * f * r;
+        }
         visc += bg * (inv_sg2 + inv_si2) * f * (P.v[i] - G_.v[g]);
         any = true;
         if (s == i && G_.reflections[g] == 1) {
@@ -201,6 +208,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   WallForce wall_force_;      // range 0 (never active) unless boundary.wall_force
   bool hydrostatic_ = false;  // boundary.ghost_pressure: hydrostatic
   bool no_tension_ = false;   // boundary.wall_tension: false
+  bool difference_ = false;   // pressure_gradient: difference
   GhostSet<D> G_;
   CellList<D> cells_;
 };

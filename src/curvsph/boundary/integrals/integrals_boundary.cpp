@@ -153,6 +153,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/geometry/moving_wall.hpp"
+#include "curvsph/io/pressure_form.hpp"
 
 namespace curvsph {
 
@@ -444,6 +445,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     p_wall_[b] = den > 0 ? num / den : 0;
   });
   const Real dn_min = Real(0.5) * dx_;
+  const bool difference = pressure_difference(spec_);  // the fluid sums are consistent already
   parallel_for_balanced(static_cast<Index>(P.size()), [&](Index i) {
     const Real inv_g = 1 / gamma_[i];
     P.a[i] *= inv_g;
@@ -454,12 +456,13 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
       // boundary.wall_tension: false: the wall only pushes (case_file.hpp).
-      const Real pb = p_wall_[b] + P.p[i];
-      fp += (no_tension_ ? std::max(pb, Real(0)) : pb) * wa * en_[b];
+      // pressure_gradient: difference (physics/pressure_gradient.hpp): (p_b - p_i).
+      const Real pb = difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i];
+      fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
-    if (consistent_ || (tensile_ && P.p[i] < 0)) {
+    if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {
       // Item 2b: remove p_i times the discrete residual of the constant-field identity (item
       // 2d: only where p_i < 0).
       const Real si = P.sigma[i];

@@ -199,6 +199,19 @@ TEST_F(MpiRun, HydrostaticTankBoundaryIntegralsSameOn1And2And4Ranks) {
                    1e-12);
 }
 
+// Open boundaries (solver/open_boundaries.hpp): particles created at the inflow buffer and
+// deleted past the outflow buffer on whichever rank owns them; the same particles (created
+// ids do not depend on the ranks), and the conservation check's reference follows them.
+TEST_F(MpiRun, OpenChannelSameParticlesOn1And2And4Ranks) {
+  same_on_1_2_4<2>(kCases +
+                       "open_channel_2d.yaml --set resolution.dx=0.01 --set time.max_steps=60 "
+                       "--set open_boundaries.0.velocity.ramp=0 "
+                       "--set open_boundaries.0.velocity.parabolic.max=0.5 --set eos.c0=5 "
+                       "--set fluids.0.velocity=[0.3,0] "
+                       "--set output.every=10",
+                   1e-10);
+}
+
 TEST_F(MpiRun, BadInputStopsEveryRankWithOneMessage) {
   const int rc = run_ranks(2, "run " + kCases + "couette.yaml -q --out " + (dir_ / "bad").string() +
                                   " --set walls.0.radius=-0.01");

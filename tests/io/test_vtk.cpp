@@ -142,7 +142,7 @@ TEST(VtkXml, HeaderAndArrays) {
   for (auto it = std::sregex_iterator(head.begin(), head.end(), off); it != std::sregex_iterator();
        ++it)
     offsets.push_back(std::stoull((*it)[1]));
-  ASSERT_EQ(offsets.size(), 9u + 1 + 2);  // 9 fields + Points + connectivity + offsets
+  ASSERT_EQ(offsets.size(), 10u + 1 + 2);  // 10 fields + Points + connectivity + offsets
   std::size_t expect = 0;
   for (std::size_t o : offsets) {
     EXPECT_EQ(o, expect);
@@ -156,12 +156,12 @@ TEST(VtkXml, HeaderAndArrays) {
   EXPECT_NE(head.find("type=\"Int32\" Name=\"connectivity\""), std::string::npos);
   EXPECT_NE(head.find("type=\"Int32\" Name=\"offsets\""), std::string::npos);
   std::uint64_t nb = 0;
-  std::memcpy(&nb, s.data() + data0 + offsets[10], 8);
+  std::memcpy(&nb, s.data() + data0 + offsets[11], 8);
   ASSERT_EQ(nb, 17u * 4);
   for (std::int32_t i = 0; i < 17; ++i) {
     std::int32_t c = -1, o = -1;
-    std::memcpy(&c, s.data() + data0 + offsets[10] + 8 + 4 * i, 4);
-    std::memcpy(&o, s.data() + data0 + offsets[11] + 8 + 4 * i, 4);
+    std::memcpy(&c, s.data() + data0 + offsets[11] + 8 + 4 * i, 4);
+    std::memcpy(&o, s.data() + data0 + offsets[12] + 8 + 4 * i, 4);
     EXPECT_EQ(c, i);
     EXPECT_EQ(o, i + 1);
   }

@@ -54,8 +54,9 @@ TEST(FieldPack, HaloCopiesLeaveOutTheOwnersResults) {
   const Particles<3> src = sample(2);
   std::vector<std::byte> buf;
   mpi::pack(src, std::vector<Index>{1}, mpi::FieldSet::halo, buf);
-  // 3 + 3 doubles of x, v; mass, rho, p, sigma; int32 phase; int64 id (no a, no drho).
-  EXPECT_EQ(buf.size(), 10 * sizeof(Real) + 4 + 8);
+  // 3 + 3 doubles of x, v; mass, rho, p, sigma; int32 phase; int64 id; int32 buffer (no a,
+  // no drho).
+  EXPECT_EQ(buf.size(), 10 * sizeof(Real) + 4 + 8 + 4);
   Particles<3> dst;
   mpi::unpack_append(dst, buf, mpi::FieldSet::halo);
   ASSERT_EQ(dst.size(), 1u);

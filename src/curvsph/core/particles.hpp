@@ -28,6 +28,9 @@ struct Particles {
   // Identity.
   std::vector<std::int32_t> phase;  // index into the case's fluids
   std::vector<std::int64_t> id;     // stable id across permutations
+  // Open boundaries (solver/open_boundaries.hpp): 0 for a fluid particle, k + 1 for a buffer
+  // particle of open boundary k (a neighbour of the fluid, not integrated as fluid).
+  std::vector<std::int32_t> buffer;
 
   std::size_t size() const { return x.size(); }
 
@@ -42,6 +45,7 @@ struct Particles {
     sigma.resize(n, 0);
     phase.resize(n, 0);
     id.resize(n, 0);
+    buffer.resize(n, 0);
   }
 
   // Visit every field: scalar(name, data) for Real arrays, vector(name, data) for Vec arrays,
@@ -58,6 +62,7 @@ struct Particles {
     f("number_density", sigma);
     f("phase", phase);
     f("id", id);
+    f("buffer", buffer);
   }
   template <class F>
   void for_each_field(F&& f) const {

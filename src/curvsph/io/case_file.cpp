@@ -291,7 +291,8 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
              "parallel",
              "artificial_viscosity",
              "transport_velocity",
-             "pressure_gradient"});
+             "pressure_gradient",
+             "open_boundaries"});
   c.name = top.text("name", path.stem().string());
   const long dim = top.integer("dimension");
   if (dim != 2 && dim != 3) top.fail("dimension", fmt::format("must be 2 or 3 (got {})", dim));
@@ -619,6 +620,15 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
       top.fail("initial", "must name exactly one initial flow field, e.g. {taylor_green: {U: 1}}");
     c.initial_field = ini.begin()->first.as<std::string>();
     c.initial_params = ini.begin()->second;
+  }
+  c.open_boundaries = read_open_boundaries(top.raw("open_boundaries"), c);
+  if (!c.open_boundaries.empty()) {
+    // The buffer particles' marks are part of the state a snapshot must hold (a restart).
+    if (!out.has("fields")) c.output_fields.push_back("buffer");
+    if (c.transport_pb > 0)
+      top.fail("transport_velocity",
+               "not available with open_boundaries (its per-particle push is not defined for "
+               "buffer particles)");
   }
   if (top.has("analysis") && !top.raw("analysis").IsMap())
     top.fail("analysis", "must be a mapping of analysis names to their parameters");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "curvsph/core/types.hpp"
+#include "curvsph/io/open_boundary_spec.hpp"
 
 namespace curvsph {
 
@@ -166,6 +167,8 @@ struct Case {
   // of owned particles, then the owner rule (halo of 2h).
   enum class HaloRule { automatic, midpoint, owner } halo_rule = HaloRule::automatic;
   std::vector<ProbeSpec> probes;
+  // open_boundaries: inflow and outflow planes with buffer layers (solver/open_boundaries.hpp).
+  std::vector<OpenBoundarySpec> open_boundaries;
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.
   std::string initial_field;
   YAML::Node initial_params;

@@ -47,12 +47,14 @@ Particles<D> read_restart(const fs::path& vtp, const Case& c) {
   const io::VtkPolyData vtk = io::read_vtp(vtp);
   std::vector<std::string> need{"velocity", "mass", "density"};
   if (c.fluids.size() > 1) need.push_back("phase");
+  if (!c.open_boundaries.empty()) need.push_back("buffer");  // which particles are buffers
   for (const auto& f : need)
     if (!vtk.find(f))
       throw InputError(vtp.string(), "",
                        "the snapshot has no '" + f +
                            "' array; a restart needs position, velocity, mass and density (and "
-                           "phase with several fluids): write them with output.fields");
+                           "phase with several fluids, buffer with open boundaries): write them "
+                           "with output.fields");
   Particles<D> p = io::particles_from_vtk<D>(vtk);
   if (!vtk.find("id"))
     for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
@@ -191,6 +193,16 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
     m["wall_contacts"] = comm.sum(static_cast<std::int64_t>(sc.contacts));
     // [mpi] a particle stopped on two ranks (it migrated between) counts twice.
     m["wall_contact_particles"] = comm.sum(static_cast<std::int64_t>(solver.contact_particles()));
+    if (const auto& ob = solver.open_boundaries(); ob.active()) {
+      // Open boundaries (solver/open_boundaries.hpp): what crossed them, and the fluid's mass
+      // (buffer particles not counted), which changes by mass_inflow - mass_outflow.
+      m["particles_inflow"] = comm.sum(ob.inflow_count());
+      m["particles_outflow"] = comm.sum(ob.outflow_count());
+      m["mass_inflow"] = comm.sum(ob.inflow_mass());
+      m["mass_outflow"] = comm.sum(ob.outflow_mass());
+      m["mass_fluid_initial"] = solver.fluid_mass_initial();
+      m["mass_fluid"] = solver.fluid_mass();
+    }
   };
   const char* relax_figure =
       c.relax.map == "integrals" ? "BI residual max h|R|" : "node-density spread";

@@ -117,6 +117,8 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   }
 
   if (!c.initial_field.empty()) apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+  open_ = OpenBoundaries<D>(c, W_.support);
+  if (open_.active()) open_.setup(P_, walls_);  // the buffer layers (solver/open_boundaries.hpp)
   {
     StageReport report("boundary set-up (" + c.boundary.method + ")");
     boundary_ = make_boundary_model<D>(BoundaryContext<D>{case_, walls_, W_, F_, cells_});
@@ -129,11 +131,13 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
   // that a halo copy's normal is complete where an owned particle reads it.
   // The midpoint rule (a halo of h) serves the fluid pair passes only: the boundary models
   // and surface tension read every neighbour of an owned particle and need the owner rule.
-  const bool full_reach = boundary_ || !c.surface_tension.empty();
+  // Open boundaries extrapolate the fluid's state over the whole support of a buffer particle.
+  const bool full_reach = boundary_ || !c.surface_tension.empty() || open_.active();
   if (c.halo_rule == Case::HaloRule::midpoint && full_reach)
     throw InputError(c.file_name(), "parallel.halo_rule",
-                     "midpoint needs a case without walls and surface tension (they read the "
-                     "whole 2h neighbourhood of an owned particle); use auto or owner");
+                     "midpoint needs a case without walls, surface tension and open boundaries "
+                     "(they read the whole 2h neighbourhood of an owned particle); use auto or "
+                     "owner");
   DecompositionOptions dop;
   dop.midpoint = c.halo_rule == Case::HaloRule::midpoint ||
                  (c.halo_rule == Case::HaloRule::automatic && !full_reach);
@@ -202,12 +206,23 @@ void Solver<D>::compute_rates(Real dt_rho) {
       density_summation(P_, cells_, W_, rule);
       if (boundary_) boundary_->add_density(P_);
     }
+    // Buffer particles take their state from the fluid or the boundary condition, not from
+    // their (truncated) sums; set before the clamp, which must not count them.
+    if (open_.active())
+      open_.buffer_state(P_, cells_, W_, F_.eos, F_.rho0, t_ + dt_rho, decomp_.owned());
     if (case_.density.clamp)
       stray_.density_clamped +=
           clamp_density(P_, decomp_.owned(), F_.rho0, static_cast<Real>(case_.density.clamp_lo),
                         static_cast<Real>(case_.density.clamp_hi));
     update_pressure(P_, F_);
     decomp_.refresh(P_);  // [mpi] halo density, sigma, pressure from their owners
+    if (open_.active() && decomp_.active()) {
+      // [mpi] Again on the refreshed halo (the fluid next to a buffer may be another rank's),
+      // then the buffer's halo copies.
+      open_.buffer_state(P_, cells_, W_, F_.eos, F_.rho0, t_ + dt_rho, decomp_.owned());
+      decomp_.refresh(P_);
+      decomp_.update_halo(P_.v);
+    }
   }
   {
     Stopwatch sw{times_.forces};
@@ -236,6 +251,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   Stopwatch sw{times_.forces};
   body_forces(P_, F_);
+  if (open_.active()) open_.freeze(P_, decomp_.owned());  // buffers are not integrated
   if (tv_.enabled()) {
     // The background-pressure push for the next drift, at these positions (walls prepared).
     shift_sums(P_, cells_, W_, static_cast<Real>(case_.dx), tv_.sums, rule);
@@ -329,7 +345,9 @@ void Solver<D>::remove_strays() {
   std::int64_t ids = 0, ids2 = 0;
   double mass = 0;
   for (Index i = 0; i < n; ++i) {
-    if (!removal_box_.outside(P_.x[i]) || !P_.x[i].allFinite()) {  // NaN: check_state's
+    // Buffer particles lie outside the domain by design; open_boundaries deletes them.
+    if (!removal_box_.outside(P_.x[i]) || !P_.x[i].allFinite() ||  // NaN: check_state's
+        P_.buffer[i] != 0) {
       keep_.push_back(static_cast<std::size_t>(i));
       continue;
     }
@@ -364,7 +382,9 @@ void Solver<D>::initialize() {
   initial_count_ = static_cast<std::int64_t>(P_.size());
   removal_box_ = removal_box<D>(case_.has_domain, case_.domain_min, case_.domain_max,
                                 case_.periodic, P_.x, walls_, case_.dx);
+  if (open_.active()) open_.number_from(P_);
   decomp_.distribute(P_);  // [mpi] keep this rank's sub-domain
+  fluid_mass_initial_ = fluid_mass();
   build_neighbors();
   resort();
   decomp_.exchange_halo(P_);  // [mpi]
@@ -506,6 +526,13 @@ void Solver<D>::step(Real dt_cap) {
       cells_.wrap(P_.x[i]);
     });
   }
+  if (open_.active()) {
+    // Crossings of the open boundaries; what entered or left P_ moves the conservation
+    // check's reference (as removed particles do).
+    const auto ch = open_.after_drift(P_, dt_);
+    for (Index i = 0; i < static_cast<Index>(P_.size()); ++i) cells_.wrap(P_.x[i]);
+    decomp_.forget(ch.count, ch.ids, ch.ids2, ch.mass);
+  }
   // Kick-drift-kick evaluates the rates at x^{n+1}: moving walls are placed at t^{n+1} before
   // the pre-pass, so ghosts, elements, wall velocities and the penetration check and contact
   // of this step all see the wall where the particles are.
@@ -527,7 +554,9 @@ void Solver<D>::step(Real dt_cap) {
     shift_sums(P_, cells_, W_, dx, shift_, rule);
     const Index n = rule.computed(P_);
     if (boundary_) boundary_->add_shift_sums(P_, n, dx, shift_);  // walls close the support
+    if (open_.active()) open_.hold(P_, decomp_.owned());
     apply_shift(P_, n, cells_, W_, dx, static_cast<Real>(case_.shifting), shift_);
+    if (open_.active()) open_.restore(P_);
   }
   apply_contacts();
   t_ += dt_;
@@ -564,6 +593,14 @@ void Solver<D>::check_state() const {
                             steps_, t_, removed, initial_count_, case_.max_removed_fraction),
                 steps_, -1);
   mpi::raise_first(comm, err);  // [mpi] every rank stops together
+}
+
+template <int D>
+double Solver<D>::fluid_mass() const {
+  double m = 0;
+  for (Index i = 0; i < decomp_.owned(); ++i)
+    if (P_.buffer[i] == 0) m += static_cast<double>(P_.mass[i]);
+  return decomp_.comm().sum(m);
 }
 
 template class Solver<2>;

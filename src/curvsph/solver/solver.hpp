@@ -20,6 +20,7 @@
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/physics/transport_velocity.hpp"
 #include "curvsph/setup/relax.hpp"
+#include "curvsph/solver/open_boundaries.hpp"
 #include "curvsph/solver/stray_particles.hpp"
 
 namespace curvsph {
@@ -63,6 +64,8 @@ class Solver {
   const Case& spec() const { return case_; }
   const WallSet<D>& walls() const { return walls_; }
   const BoundaryModel<D>* boundary() const { return boundary_.get(); }
+  // Inflow and outflow buffers (case key open_boundaries; inactive without it).
+  const OpenBoundaries<D>& open_boundaries() const { return open_; }
   // MPI domain decomposition: particles() holds the owned particles at [0, owned()) and,
   // after a step, halo copies behind them (parallel/decomposition.hpp).
   const Decomposition<D>& decomposition() const { return decomp_; }
@@ -94,6 +97,10 @@ class Solver {
   };
   const StrayCounts& stray_counts() const { return stray_; }
   std::int64_t initial_count() const { return initial_count_; }
+  // The mass of the fluid particles (buffer particles of open boundaries not counted), over
+  // all ranks (collective), now and after set-up.
+  double fluid_mass() const;
+  double fluid_mass_initial() const { return fluid_mass_initial_; }
   // Distinct particles (ids) this rank stopped at the contact distance at least once: a
   // particle resting on the contact layer is stopped again at every step (contacts counts
   // those events).
@@ -146,6 +153,7 @@ class Solver {
   WendlandC2<D> W_;
   FluidParams<D> F_;
   std::unique_ptr<BoundaryModel<D>> boundary_;
+  OpenBoundaries<D> open_;
   Decomposition<D> decomp_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
@@ -168,6 +176,7 @@ class Solver {
   std::optional<InitialDensityError> initial_density_error_;
   StrayCounts stray_;
   std::int64_t initial_count_ = 0;
+  double fluid_mass_initial_ = 0;
   RemovalBox<D> removal_box_;
   std::vector<std::size_t> keep_;  // remove_strays() scratch
   std::vector<Index> close_;       // prepare_boundary() scratch

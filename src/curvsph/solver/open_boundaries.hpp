@@ -1,0 +1,129 @@
+#pragma once
+// Open boundaries: inflow and outflow planes with buffer layers (case key `open_boundaries`,
+// io/open_boundary_spec.hpp). The method is the buffer-layer one of Tafuni, Domínguez,
+// Vacondio & Crespo (2018, Comput. Methods Appl. Mech. Engrg. 342, 604-624) and Negi,
+// Ramachandran & Haftu (2020, Comput. Methods Appl. Mech. Engrg.; arXiv:1907.04034, whose
+// "do-nothing" outlet is the outflow buffer below), and of SPHinXsys' emitter buffers:
+//
+// - Behind each boundary (signed distance d = (x - point).n < 0, n into the fluid) lies a
+//   buffer of layers = ceil(2h/dx) lattice layers (thickness L >= the kernel support), so the
+//   support of a fluid particle at the boundary is full. Buffer particles are neighbours of
+//   the fluid in every pair sum but are not integrated as fluid: their state is prescribed.
+// - Inflow buffer: velocity prescribed (uniform or parabolic, ramped over `ramp` seconds),
+//   moving along the normal; density (hence pressure) extrapolated from the fluid at zeroth
+//   order, a Shepard average over the fluid neighbours (Tafuni et al. §3.2 use a first-order
+//   extrapolation at a mirror point; the zeroth order is their "do nothing" pressure).
+//   A buffer particle that crosses the boundary (d >= 0) becomes fluid, and a copy of it
+//   enters the buffer at its back, x - L n (the buffer is periodic along the normal).
+// - Outflow buffer: a fluid particle that crosses the boundary (d < 0) becomes a buffer
+//   particle; its pressure is the prescribed one (density from the equation of state), its
+//   velocity the Shepard average of its fluid neighbours (kept once it has none); it is
+//   deleted when it leaves the buffer's back (d < -L). One that drifts back (d >= 0) becomes
+//   fluid again and is taken off the outflow count.
+// - A fluid particle that flows back behind an inflow (d < 0 within the inflow's cross
+//   section) is deleted and counted as outflow.
+//
+// The counts and masses that crossed (particles_inflow / particles_outflow, mass_inflow /
+// mass_outflow in metrics.json) balance the fluid's mass exactly: mass in - mass out = change
+// of the mass of the fluid particles (buffer == 0).
+#include <cstdint>
+#include <vector>
+
+#include "curvsph/core/particles.hpp"
+#include "curvsph/geometry/wall.hpp"
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/kernels/wendland.hpp"
+#include "curvsph/neighbors/cell_list.hpp"
+#include "curvsph/physics/eos.hpp"
+
+namespace curvsph {
+
+template <int D>
+class OpenBoundaries {
+ public:
+  OpenBoundaries() = default;
+  OpenBoundaries(const Case& c, Real support);
+  bool active() const { return !specs_.empty(); }
+  std::size_t size() const { return specs_.size(); }
+  Real buffer_depth() const { return depth_; }
+
+  // Set-up, on the generated particles (every rank holds them all): drops fill particles
+  // behind a boundary within its cross section, refuses (InputError) a boundary with no fluid
+  // in front of it, and fills each buffer with lattice layers of mass rho0 dx^D (fluid 0).
+  void setup(Particles<D>& P, const WallSet<D>& walls);
+  // Ids of created particles: the copy of a buffer particle that entered the fluid takes its
+  // id plus K, K = 1 + the largest id of P (every rank holds every particle). Every id below K
+  // is unique, each buffer particle is copied once, so b + n K is unique; and it depends on
+  // no rank's numbering, so runs on any number of ranks name their particles alike.
+  void number_from(const Particles<D>& P);
+
+  // The inflow velocity of boundary k at x and time t (ramp included).
+  Vec<D> inflow_velocity(std::size_t k, const Vec<D>& x, double t) const;
+
+  // After the drift, on the owned particles (no halo): inflow buffer particles keep to the
+  // normal, crossings change a particle's role, particles are created at the inflow buffers'
+  // backs and deleted past the outflow buffers' backs. Returns what left and entered P as
+  // (count, id sum, id square sum, mass), the net of deleted minus created (for the
+  // conservation reference of the domain decomposition).
+  struct Change {
+    std::int64_t count = 0, ids = 0, ids2 = 0;
+    double mass = 0;
+  };
+  Change after_drift(Particles<D>& P, Real dt);
+
+  // After the equation of state (halo densities and pressures current): the state of the
+  // owned buffer particles [0, owned) at time t (velocity, density, number density, pressure).
+  void buffer_state(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
+                    const Eos& eos, const std::vector<Real>& rho0, double t, Index owned);
+  // After the force passes: buffer particles are not integrated (no acceleration, no density
+  // rate).
+  void freeze(Particles<D>& P, Index owned) const;
+  // Around particle shifting: the buffer particles' positions, velocities and densities are
+  // kept (the buffer's back has a truncated support that shifting would spread).
+  void hold(const Particles<D>& P, Index owned);
+  void restore(Particles<D>& P) const;
+
+  // This rank's counters: particles and mass that entered the fluid through the inflows and
+  // left it through the outflows (or back through an inflow).
+  std::int64_t inflow_count() const { return in_count_; }
+  std::int64_t outflow_count() const { return out_count_; }
+  double inflow_mass() const { return in_mass_; }
+  double outflow_mass() const { return out_mass_; }
+
+ private:
+  struct Plane {
+    Vec<D> point, normal;
+    Vec<D> tangent[D - 1];  // orthonormal basis of the plane
+  };
+  Real distance(std::size_t k, const Vec<D>& x) const {
+    return (x - planes_[k].point).dot(planes_[k].normal);
+  }
+  // Inside boundary k's cross section (the profile's support, and the lateral box).
+  bool in_section(std::size_t k, const Vec<D>& x) const;
+  // The profile shape at x (1 at the peak), without the ramp.
+  Real profile(std::size_t k, const Vec<D>& x) const;
+
+  std::vector<OpenBoundarySpec> specs_;
+  std::vector<Plane> planes_;
+  Real dx_ = 0, depth_ = 0;
+  int layers_ = 0;
+  Real rho0_ = 1;
+  VecD<D> box_lo_ = VecD<D>::Zero(), box_hi_ = VecD<D>::Zero();  // lateral bound of sections
+  bool has_box_ = false;
+  std::string file_;
+  std::int64_t id_stride_ = 0;
+  std::int64_t in_count_ = 0, out_count_ = 0;
+  double in_mass_ = 0, out_mass_ = 0;
+  // Scratch.
+  std::vector<std::size_t> keep_;
+  std::vector<Index> spawn_;
+  std::vector<std::byte> bytes_;
+  struct Held {
+    Index i;
+    Vec<D> x, v;
+    Real rho;
+  };
+  std::vector<Held> held_;
+};
+
+}  // namespace curvsph

@@ -76,10 +76,10 @@ class ConcaveCorner : public ::testing::TestWithParam<double> {};
 TEST_P(ConcaveCorner, ImagesFillTheSupport) {
   const double theta = GetParam() * kPi / 180, h = 1.0;
   const Wedge w(theta, 10.0);
-  // Points at 0.25 h .. 1.5 h from the corner along three rays inside the wedge.
+  // Points at 0.25 h and 1.5 h from the corner along two rays inside the wedge.
   double worst = 0;
-  for (double frac : {0.2, 0.5, 0.8})
-    for (double r : {0.25, 0.75, 1.5}) {
+  for (double frac : {0.2, 0.7})
+    for (double r : {0.25, 1.5}) {
       const double a = frac * theta;
       worst = std::max(
           worst, std::abs(shepard_at(w, r * h * Vec2d(std::cos(a), std::sin(a)), h, 400) - 1));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <vector>
 
 #include "curvsph/core/error.hpp"
@@ -100,8 +101,8 @@ class HydrostaticAnalysis final : public Analysis<D> {
       e2 += d * d;
       ++n;
     }
-    return std::sqrt(e2 / static_cast<double>(std::max<std::size_t>(n, 1))) /
-           (hs_.rho0 * hs_.g * hs_.depth);
+    if (n == 0) return std::numeric_limits<double>::quiet_NaN();  // none that deep
+    return std::sqrt(e2 / static_cast<double>(n)) / (hs_.rho0 * hs_.g * hs_.depth);
   }
 
   Hydrostatic hs_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <vector>
 
 #include "curvsph/core/error.hpp"
@@ -42,11 +43,14 @@ Hydrostatic hydrostatic_from_case(const Case& c, const YAML::Node& params, const
 
 namespace {
 
-class HydrostaticAnalysis final : public Analysis<2> {
+// y is the last axis (z in 3-D).
+template <int D>
+class HydrostaticAnalysis final : public Analysis<D> {
  public:
-  HydrostaticAnalysis(Hydrostatic hs, WallSet<2> walls) : hs_(hs), walls_(std::move(walls)) {}
+  HydrostaticAnalysis(Hydrostatic hs, WallSet<D> walls, double support)
+      : hs_(hs), walls_(std::move(walls)), support_(support) {}
 
-  void observe(double t, const Particles<2>& P) override {
+  void observe(double t, const Particles<D>& P) override {
     double ke = 0, mass = 0;
     for (std::size_t i = 0; i < P.size(); ++i) {
       ke += 0.5 * P.mass[i] * P.v[i].squaredNorm();
@@ -54,10 +58,10 @@ class HydrostaticAnalysis final : public Analysis<2> {
     }
     times_.push_back(t);
     ke_.push_back(ke / (mass * hs_.g * hs_.depth));
-    perr_.push_back(pressure_error(P));
+    perr_.push_back(pressure_error(P, -1));
   }
 
-  void finish(double t, const Particles<2>& P, nlohmann::json& m,
+  void finish(double t, const Particles<D>& P, nlohmann::json& m,
               const std::filesystem::path& out_dir) override {
     if (times_.empty() || times_.back() != t) observe(t, P);
     const double tau = std::sqrt(hs_.g / hs_.depth);
@@ -70,47 +74,56 @@ class HydrostaticAnalysis final : public Analysis<2> {
       std::ofstream prof(out_dir / "hydrostatic_profile.csv");
       prof << "x,y,p,p_exact\n";
       for (std::size_t i = 0; i < P.size(); ++i)
-        prof << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", P.x[i][0], P.x[i][1], P.p[i],
-                            exact(P.x[i][1]));
+        prof << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", P.x[i][0], P.x[i][D - 1], P.p[i],
+                            exact(P.x[i][D - 1]));
     }
     long escaped = 0;
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (!walls_.empty() && walls_.closest(P.x[i].cast<double>()).distance <= 0) ++escaped;
+      if (!walls_.empty() && walls_.closest(P.x[i].template cast<double>()).distance <= 0)
+        ++escaped;
     m["kinetic_energy_max"] = *std::max_element(ke_.begin(), ke_.end());
     m["kinetic_energy_final"] = ke_.back();
     m["pressure_l2_error"] = perr_.back();
+    m["pressure_l2_error_deep"] = pressure_error(P, support_);
     m["escaped_particles"] = escaped;
     m["t_end_reached"] = t * tau;
   }
 
  private:
   double exact(double y) const { return std::max(0.0, hs_.pressure(y)); }
-  double pressure_error(const Particles<2>& P) const {
+  // RMS over the particles at least `below` under the surface (all: below < 0).
+  double pressure_error(const Particles<D>& P, double below) const {
     double e2 = 0;
+    std::size_t n = 0;
     for (std::size_t i = 0; i < P.size(); ++i) {
-      const double d = P.p[i] - exact(P.x[i][1]);
+      if (below >= 0 && hs_.surface() - P.x[i][D - 1] < below) continue;
+      const double d = P.p[i] - exact(P.x[i][D - 1]);
       e2 += d * d;
+      ++n;
     }
-    const double n = static_cast<double>(std::max<std::size_t>(P.size(), 1));
-    return std::sqrt(e2 / n) / (hs_.rho0 * hs_.g * hs_.depth);
+    if (n == 0) return std::numeric_limits<double>::quiet_NaN();  // none that deep
+    return std::sqrt(e2 / static_cast<double>(n)) / (hs_.rho0 * hs_.g * hs_.depth);
   }
 
   Hydrostatic hs_;
-  WallSet<2> walls_;
+  WallSet<D> walls_;
+  double support_;  // 2h: "deep" is at least this far below the surface
   std::vector<double> times_, ke_, perr_;
 };
 
 }  // namespace
 
-std::unique_ptr<Analysis<2>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c) {
-  if (c.dimension != 2)
-    throw InputError(c.file_name(), "analysis.hydrostatic", "the hydrostatic analysis is 2-D");
-  WallSet<2> walls;
+template <int D>
+std::unique_ptr<Analysis<D>> make_hydrostatic_analysis(const YAML::Node& params, const Case& c) {
+  WallSet<D> walls;
   if (c.root["walls"] && c.root["walls"].IsSequence())
-    walls = parse_walls<2>(c.root["walls"], c.file_name(), c.file.parent_path());
-  return std::make_unique<HydrostaticAnalysis>(
-      hydrostatic_from_case(c, params, "analysis.hydrostatic"), std::move(walls));
+    walls = parse_walls<D>(c.root["walls"], c.file_name(), c.file.parent_path());
+  return std::make_unique<HydrostaticAnalysis<D>>(
+      hydrostatic_from_case(c, params, "analysis.hydrostatic"), std::move(walls), 2 * c.h());
 }
+
+template std::unique_ptr<Analysis<2>> make_hydrostatic_analysis<2>(const YAML::Node&, const Case&);
+template std::unique_ptr<Analysis<3>> make_hydrostatic_analysis<3>(const YAML::Node&, const Case&);
 
 namespace {
 

@@ -33,13 +33,13 @@ const Entry<2> kEntries2[] = {
     {"node_density", &make_node_density_analysis<2>, nullptr},
     {"cylinder_lattice", &make_cylinder_lattice_analysis, nullptr},
     {"throttled_pipe", &make_throttled_pipe_analysis, &throttled_pipe_initial},
-    {"hydrostatic", &make_hydrostatic_analysis, &hydrostatic_initial<2>},
+    {"hydrostatic", &make_hydrostatic_analysis<2>, &hydrostatic_initial<2>},
     {"surge_front", &make_surge_front_analysis, nullptr},
 };
 const Entry<3> kEntries3[] = {
     {"static_droplet", &make_static_droplet_analysis<3>, nullptr},
     {"node_density", &make_node_density_analysis<3>, nullptr},
-    {"hydrostatic", nullptr, &hydrostatic_initial<3>},
+    {"hydrostatic", &make_hydrostatic_analysis<3>, &hydrostatic_initial<3>},
     {"dam_break", &make_dam_break_analysis, nullptr},
 };
 

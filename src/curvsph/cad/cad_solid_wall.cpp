@@ -105,6 +105,16 @@ std::string CadSolidWall::describe() const {
   return fmt::format("{} ({} faces, closed, fluid {})", label_, faces_.size(), to_string(side_));
 }
 
+int CadSolidWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* out, int max) const {
+  int n = 0;
+  for (std::size_t k = 0; k < faces_.size() && n < max; ++k) {
+    if (!(boxes_[k].exteriorDistance(x) < reach)) continue;
+    WallPoint<3> p = faces_[k]->closest(x);
+    if (std::abs(p.distance) < reach) out[n++] = p;
+  }
+  return n;
+}
+
 WallPoint<3> CadSolidWall::closest(const Vec3d& x, const ParamSeed&) const {
   // Faces by the distance of their boxes (a lower bound of the distance to the face).
   const std::size_t n = faces_.size();

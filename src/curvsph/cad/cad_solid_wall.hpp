@@ -20,13 +20,14 @@
 #include <vector>
 
 #include "curvsph/cad/trimmed_face_wall.hpp"
+#include "curvsph/geometry/faceted.hpp"
 #include "curvsph/geometry/shape_util.hpp"
 
 class TopoDS_Shape;
 
 namespace curvsph::cad {
 
-class CadSolidWall : public Wall<3> {
+class CadSolidWall : public Wall<3>, public MultiFace<3> {
  public:
   // `shape` holds the closed shells (solids or shells) whose faces are `faces`, in metres
   // after `scale`; `side`: where the fluid is relative to the closed shell.
@@ -39,6 +40,8 @@ class CadSolidWall : public Wall<3> {
   double min_radius_of_curvature() const override;
   double distance_lower_bound(const Vec3d& x) const override;
   bool closed_surface() const override { return true; }
+  // Every face whose box is within `reach`, answering alone (faceted.hpp), nearest box first.
+  int face_points_near(const Vec3d& x, double reach, WallPoint<3>* out, int max) const override;
 
   // +1: x inside the closed shell, -1: outside, 0: on it (within the shape's tolerance).
   // The classifier of OpenCASCADE; independent of the faces' normals.

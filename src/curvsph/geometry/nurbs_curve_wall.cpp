@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,6 +25,28 @@ NurbsCurveWall::NurbsCurveWall(nurbs::NurbsCurve<2> curve, Side fluid, double to
       kmax = std::max(kmax, nurbs::curvature(curve_->eval(U[k] + (U[k + 1] - U[k]) * i / 64.0)));
   }
   min_radius_ = kmax > 0.0 ? 1.0 / kmax : std::numeric_limits<double>::infinity();
+  // Degree 1: the curve passes through every control point (the Greville abscissae of degree
+  // 1 are knots) and is straight between them, whatever the weights.
+  if (curve_->degree() == 1) {
+    const auto& P = curve_->control_points();
+    const double s = side_ == Side::left ? 1.0 : -1.0;
+    for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+      const Vec2d t = P[k + 1] - P[k];
+      if (!(t.norm() > 0.0)) continue;
+      facets_.push_back({P[k], P[k + 1], s * Vec2d(-t.y(), t.x()).normalized()});
+    }
+  }
+}
+
+int NurbsCurveWall::facets_near(const Vec2d& x, double reach, WallFacet<2>* out, int max) const {
+  if (facets_.empty()) return -1;
+  int n = 0;
+  for (const WallFacet<2>& f : facets_) {
+    const Vec2d t = f.b - f.a;
+    const double u = std::clamp((x - f.a).dot(t) / t.squaredNorm(), 0.0, 1.0);
+    if ((x - (f.a + u * t)).norm() < reach && n < max) out[n++] = f;
+  }
+  return n;
 }
 
 WallPoint<2> NurbsCurveWall::closest(const Vec2d& x, const ParamSeed& seed) const {
@@ -40,7 +63,30 @@ WallPoint<2> NurbsCurveWall::closest(const Vec2d& x, const ParamSeed& seed) cons
   w.param = {pr.param[0], 0.0};
   w.param_count = 1;
   w.iterations = pr.iterations;
+  if (!facets_.empty()) polygon_vertex(x, w);
   return w;
+}
+
+// A polygon's kink: one side's normal can put a point on the wrong side there (outside an acute
+// corner, beside the vertex, the floor's normal sees it above the floor). The angle-weighted
+// pseudo-normal, here the sum of the two faces' normals, decides (Baerentzen & Aanaes 2005, in
+// 2-D), and the normal is along foot -> point, flat, as box corners give.
+void NurbsCurveWall::polygon_vertex(const Vec2d& x, WallPoint<2>& w) const {
+  const double tie = 1e-9 * curve_->size();
+  for (std::size_t k = 0; k + 1 < facets_.size(); ++k) {
+    const Vec2d& v = facets_[k].b;
+    if ((w.foot - v).norm() > tie || (facets_[k + 1].a - v).norm() > tie) continue;
+    const Vec2d pseudo = facets_[k].normal + facets_[k + 1].normal;
+    if (facets_[k].normal.dot(facets_[k + 1].normal) > 1.0 - 1e-12) return;  // collinear
+    const Vec2d d = x - v;
+    const double len = d.norm();
+    const double sign = d.dot(pseudo) >= 0 ? 1.0 : -1.0;
+    w.foot = v;
+    w.distance = sign * len;
+    if (len > tie) w.normal = sign * d / len;
+    w.k1 = 0.0;
+    return;
+  }
 }
 
 std::string NurbsCurveWall::describe() const {

@@ -10,14 +10,16 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "curvsph/geometry/faceted.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/nurbs/projection.hpp"
 #include "curvsph/nurbs/sampling.hpp"
 
 namespace curvsph {
 
-class NurbsCurveWall : public Wall<2> {
+class NurbsCurveWall : public Wall<2>, public Faceted<2> {
  public:
   enum class Side { left, right };
   // tolerance: closest-point distance tolerance (<= 0: 1e-10 of the curve's size).
@@ -29,6 +31,9 @@ class NurbsCurveWall : public Wall<2> {
   double distance_lower_bound(const Vec2d& x) const override {
     return proj_->lower_bound(x, std::numeric_limits<double>::infinity());
   }
+
+  // A degree-1 curve is a polyline: its segments are its faces (faceted.hpp); -1 otherwise.
+  int facets_near(const Vec2d& x, double reach, WallFacet<2>* out, int max) const override;
 
   // Boundary particles at arc-length spacing about dx, with their parameters (the seeds).
   nurbs::CurveSamples<2> boundary_particles(double dx) const {
@@ -46,6 +51,8 @@ class NurbsCurveWall : public Wall<2> {
   Side side_;
   double tol_;
   double min_radius_;
+  std::vector<WallFacet<2>> facets_;  // degree 1 only: the segments, in curve order
+  void polygon_vertex(const Vec2d& x, WallPoint<2>& w) const;
 };
 
 // {shape: nurbs_curve, degree, control_points, weights (optional, default 1), knots,

@@ -19,6 +19,7 @@ StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wal
 StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
 StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surface_study.cpp
 StudyResult run_moving_cylinder_study(const StudyContext& ctx);   // moving_cylinder_study.cpp
+StudyResult run_cad_at_rest_study(const StudyContext& ctx);       // cad_at_rest_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -45,6 +46,9 @@ const std::vector<Study>& validation_studies() {
       {"free_surface",
        "Free surfaces against curved walls, every boundary method; 2-D dam break vs Martin & Moyce",
        &run_free_surface_study},
+      {"cad_at_rest",
+       "Water at rest in polygon tanks (60-120 deg corners) and CAD solids, every boundary method",
+       &run_cad_at_rest_study},
       {"dam_break_3d", "3-D dam break against a box, SPHERIC test 2 (Calderon §3.2, Figs. 14-17)",
        &run_dam_break_study},
       {"shepard_cost", "Time per step: gamma = 1, volume and geometric Shepard (Calderon Table 1)",

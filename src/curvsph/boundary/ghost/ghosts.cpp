@@ -8,6 +8,7 @@
 #include <limits>
 #include <utility>
 
+#include "curvsph/boundary/ghost/facet_images.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
 
@@ -46,6 +47,8 @@ template <int D>
 struct Generator {
   const WallSet<D>& walls;
   const std::vector<const BoxWall<D>*>& boxes;
+  const std::vector<const Faceted<D>*>& faceted_walls;
+  const std::vector<const MultiFace<D>*>& multi_walls;
   const GhostOptions<D>& opt;
 
   using Record = typename GhostSet<D>::Record;
@@ -98,10 +101,103 @@ struct Generator {
          static_cast<std::uint8_t>(count));
   }
 
+  // A faceted wall (a polygon): the images of facet_images.hpp, flat faces (kappa = 0, so
+  // every map is the mirror, beta = 1). False for walls that are not faceted.
+  bool faceted(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
+               const VecD<D>& u) const {
+    constexpr int kMaxFaces = 16, kMaxImages = 32;
+    std::array<WallFacet<D>, kMaxFaces> faces;
+    if (!faceted_walls[k]) return false;
+    const int nf = faceted_walls[k]->facets_near(x, 2.0 * opt.support, faces.data(), kMaxFaces);
+    if (nf < 0) return false;
+    std::array<FacetImage<D>, kMaxImages> images;
+    const int ni = facet_images<D>(x, faces.data(), nf, opt.support, images.data(), kMaxImages);
+    for (int g = 0; g < ni; ++g) {
+      const FacetImage<D>& im = images[static_cast<std::size_t>(g)];
+      const VecD<D> uw = walls[k].motion.velocity_at(im.foot);
+      const VecD<D> slip = uw + im.M * (u - uw);
+      const VecD<D> ug = opt.velocity == GhostVelocity::free_slip
+                             ? slip
+                             : VecD<D>(uw + im.M.determinant() * (u - uw));
+      emit(out, i, k, im.x, ug, slip, 1.0, im.depth, im.source_depth, im.foot, im.normal,
+           im.reflections);
+    }
+    return true;
+  }
+
+  // A wall of several faces (a CAD solid, faceted.hpp): one ghost per face onto which x
+  // projects (the foot inside the face: x - foot along its normal), with the map and the
+  // face's own curvatures; planar faces join `flat` for the perpendicular corners below, and
+  // a curved face's ghost is reflected across every planar face perpendicular to it (a pipe's
+  // bore meeting its end cap: the double image of that edge). False when x projects onto no
+  // face (the region of a convex edge or vertex): the closest point answers there.
+  static constexpr int kMaxFlat = 12;
+  bool multiface(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
+                 const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
+                 bool& no_root) const {
+    if (!multi_walls[k]) return false;
+    constexpr int kMaxFaces = 16;
+    std::array<WallPoint<D>, kMaxFaces> fp;
+    const int nf = multi_walls[k]->face_points_near(x, opt.support, fp.data(), kMaxFaces);
+    std::array<int, kMaxFaces> used{};
+    int nused = 0;
+    for (int f = 0; f < nf; ++f) {
+      const WallPoint<D>& p = fp[static_cast<std::size_t>(f)];
+      if (!(p.distance > 0 && p.distance < opt.support)) continue;
+      if ((x - p.foot - p.distance * p.normal).norm() > 1e-6 * p.distance) continue;
+      bool dup = false;  // a tangent junction: two faces, one foot
+      for (int q = 0; q < nused; ++q)
+        dup |= (fp[static_cast<std::size_t>(used[q])].foot - p.foot).norm() <= 1e-9 * p.distance;
+      if (dup) continue;
+      used[static_cast<std::size_t>(nused++)] = f;
+    }
+    if (nused == 0) return false;
+    std::array<int, kMaxFaces> curved{};
+    int ncurved = 0;
+    const int flat0 = nflat;
+    for (int q = 0; q < nused; ++q) {
+      const WallPoint<D>& p = fp[static_cast<std::size_t>(used[q])];
+      const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
+      if (!g.ok) {
+        no_root = true;
+        continue;
+      }
+      const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
+      const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
+      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
+           p.normal, 1);
+      if (p.k1 == 0.0 && p.k2 == 0.0) {
+        if (nflat < kMaxFlat) flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k};
+      } else {
+        curved[static_cast<std::size_t>(ncurved++)] = used[q];
+      }
+    }
+    // Curved ghost x' reflected across a perpendicular planar face A: the image of x' behind
+    // A, velocities composed (emit_corner's rule).
+    for (int c = 0; c < ncurved; ++c) {
+      const WallPoint<D>& p = fp[static_cast<std::size_t>(curved[c])];
+      const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
+      const VecD<D> xg = p.foot - g.depth * p.normal;
+      const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
+      const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
+      for (int a = flat0; a < nflat; ++a) {
+        const FlatFace<D>& A = flat[static_cast<std::size_t>(a)];
+        if (std::abs(A.normal.dot(p.normal)) > 1e-6) continue;
+        const double da = (xg - A.foot).dot(A.normal);
+        const VecD<D> fa = xg - da * A.normal;
+        const VecD<D> uwa = walls[k].motion.velocity_at(fa);
+        const VecD<D> u2 = images(ug, uwa, A.normal, 1.0).first;
+        const VecD<D> u2_slip =
+            ghost_velocity<D>(GhostVelocity::free_slip, ug_slip, uwa, A.normal, 1.0);
+        emit(out, i, k, fa - da * A.normal, u2, u2_slip, g.beta, da, da, fa, A.normal, 2);
+      }
+    }
+    return true;
+  }
+
   // Returns {penetrated, no_root}.
   std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
                                  std::vector<Record>& out) const {
-    constexpr int kMaxFlat = 12;
     std::array<FlatFace<D>, kMaxFlat> flat;
     int nflat = 0;
     bool penetrated = false, no_root = false;
@@ -146,6 +242,8 @@ struct Generator {
         continue;
       }
       if (!(p.distance < support)) continue;
+      if (faceted(out, i, k, x, u)) continue;
+      if (multiface(out, i, k, x, u, flat, nflat, no_root)) continue;
       const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
       if (!g.ok) {
         no_root = true;
@@ -187,7 +285,11 @@ template <int D>
 void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>>& v_f,
                         const WallSet<D>& walls, const GhostOptions<D>& options) {
   boxes_.resize(walls.size());
+  faceted_.resize(walls.size());
+  multi_.resize(walls.size());
   for (std::size_t k = 0; k < walls.size(); ++k) {
+    multi_[k] = dynamic_cast<const MultiFace<D>*>(&walls[k]);
+    faceted_[k] = dynamic_cast<const Faceted<D>*>(&walls[k]);
     const auto* box = dynamic_cast<const BoxWall<D>*>(&walls[k]);
     boxes_[k] = box && box->side() == FluidSide::inside ? box : nullptr;
   }
@@ -198,7 +300,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     thread_no_root_.resize(max_threads);
   }
   offsets_.resize(max_threads + 1);
-  const Generator<D> gen{walls, boxes_, options};
+  const Generator<D> gen{walls, boxes_, faceted_, multi_, options};
   const Index n = static_cast<Index>(x_f.size());
   int used_threads = 1;
 

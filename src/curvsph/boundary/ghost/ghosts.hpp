@@ -54,6 +54,7 @@
 
 #include "curvsph/boundary/ghost/ghost_map.hpp"
 #include "curvsph/core/types.hpp"
+#include "curvsph/geometry/faceted.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/neighbors/cell_list.hpp"
 
@@ -118,7 +119,9 @@ class GhostSet {
   std::vector<std::vector<Record>> thread_ghosts_;
   std::vector<std::vector<Index>> thread_penetrated_, thread_no_root_;
   std::vector<std::size_t> offsets_;
-  std::vector<const BoxWall<D>*> boxes_;  // per wall: the box when fluid is inside, else null
+  std::vector<const BoxWall<D>*> boxes_;    // per wall: the box when fluid is inside, else null
+  std::vector<const Faceted<D>*> faceted_;  // per wall: a faceted wall (a polygon), else null
+  std::vector<const MultiFace<D>*> multi_;  // per wall: a wall of several faces, else null
 };
 
 // Set-up refusal (exit 2): for every wall N, the curvatures at the closest points of the

@@ -1,0 +1,277 @@
+// Every wall type with every boundary method (issue 32, "Done when"; the table of
+// docs/geometry.md): water at rest under gravity in a small container made of that wall type,
+// held for a short time with each ghost map and with boundary integrals. Reference: the
+// hydrostatic field rho0 g (H - z) of the run's own analysis, RMS over the particles at least
+// one support below the surface ("deep"). Coarse (H/dx = 3 to 10) and short (2-D 0.2 s, 3-D
+// 0.05 s), one thread. The polygon (degree-1 NURBS) tanks with corners of 60, 90 and 120 degrees
+// are test_corner_tank.cpp.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Controller.hxx>
+#include <STEPControl_Writer.hxx>
+#include <UnitsMethods.hxx>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "../support/quiet_run.hpp"
+#include "../support/test_meshes.hpp"
+#include "curvsph/io/case_file.hpp"
+
+namespace curvsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / fmt::format("curvsph_matrix_{}", ::getpid());
+  fs::create_directories(d);
+  return d;
+}
+
+void write_step(const TopoDS_Shape& shape, const fs::path& path) {
+  STEPControl_Controller::Init();
+  Interface_Static::SetCVal("xstep.cascade.unit", "M");
+  Interface_Static::SetCVal("write.step.unit", "M");
+  UnitsMethods::SetCasCadeLengthUnit(1000.0);
+  STEPControl_Writer w;
+  ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
+  ASSERT_EQ(w.Write(path.c_str()), IFSelect_RetDone);
+}
+
+struct Container {
+  int dim;
+  double dx, depth, bottom;
+  std::string region, walls, domain;  // domain: "" or the domain block
+};
+
+// The containers, water from `bottom` to bottom + depth.
+Container setup(const std::string& wall) {
+  if (wall == "plane_2d")
+    return {2,
+            0.02,
+            0.2,
+            0,
+            "{box: {min: [0, 0], max: [0.4, 0.2]}}",
+            "[{shape: plane, point: [0, 0], normal: [0, 1]}, {shape: plane, point: [0, 0], "
+            "normal: [1, 0]}, {shape: plane, point: [0.4, 0], normal: [-1, 0]}]",
+            "{min: [-0.1, -0.1], max: [0.5, 0.4]}"};
+  if (wall == "box_2d")
+    return {2,
+            0.02,
+            0.2,
+            0,
+            "{box: {min: [0, 0], max: [0.4, 0.2]}}",
+            "[{shape: box, min: [0, 0], max: [0.4, 0.4], fluid: inside}]",
+            ""};
+  if (wall == "circle")
+    return {2,
+            0.02,
+            0.2,
+            -0.2,
+            "{box: {min: [-0.2, -0.2], max: [0.2, 0]}}",
+            "[{shape: circle, center: [0, 0], radius: 0.2, fluid: inside}]",
+            ""};
+  if (wall == "ellipse")
+    return {2,
+            0.02,
+            0.2,
+            -0.2,
+            "{box: {min: [-0.3, -0.2], max: [0.3, 0]}}",
+            "[{shape: ellipse, center: [0, 0], semi_axes: [0.3, 0.2], fluid: inside}]",
+            ""};
+  if (wall == "nurbs_circle") {
+    // The exact circle of radius 0.2: 9 control points, weights sqrt(2)/2 at the corners,
+    // counter-clockwise (fluid on the left: inside).
+    const double r = 0.2, w = std::sqrt(0.5);
+    return {2,
+            0.02,
+            0.2,
+            -0.2,
+            "{box: {min: [-0.2, -0.2], max: [0.2, 0]}}",
+            fmt::format("[{{shape: nurbs_curve, degree: 2, fluid: left, "
+                        "knots: [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4], "
+                        "weights: [1, {w}, 1, {w}, 1, {w}, 1, {w}, 1], "
+                        "control_points: [[{r}, 0], [{r}, {r}], [0, {r}], [-{r}, {r}], [-{r}, 0], "
+                        "[-{r}, -{r}], [0, -{r}], [{r}, -{r}], [{r}, 0]]}}]",
+                        fmt::arg("r", r), fmt::arg("w", w)),
+            ""};
+  }
+  if (wall == "plane_3d")
+    return {3,
+            0.02,
+            0.1,
+            0,
+            "{box: {min: [0, 0, 0], max: [0.24, 0.24, 0.1]}}",
+            "[{shape: plane, point: [0, 0, 0], normal: [0, 0, 1]}]",
+            "{min: [0, 0, -0.1], max: [0.24, 0.24, 0.3], periodic: [true, true, false]}"};
+  if (wall == "box_3d")
+    return {3,
+            0.02,
+            0.1,
+            0,
+            "{box: {min: [0, 0, 0], max: [0.12, 0.12, 0.1]}}",
+            "[{shape: box, min: [0, 0, 0], max: [0.12, 0.12, 0.2], fluid: inside}]",
+            ""};
+  if (wall == "cylinder")
+    return {3,
+            0.02,
+            0.1,
+            -0.1,
+            "{box: {min: [0, -0.1, -0.1], max: [0.24, 0.1, 0]}}",
+            "[{shape: cylinder, point: [0, 0, 0], axis: [1, 0, 0], radius: 0.1, fluid: inside}]",
+            "{min: [0, -0.2, -0.2], max: [0.24, 0.2, 0.2], periodic: [true, false, false]}"};
+  if (wall == "sphere")
+    return {3,
+            0.02,
+            0.1,
+            -0.1,
+            "{box: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0]}}",
+            "[{shape: sphere, center: [0, 0, 0], radius: 0.1, fluid: inside}]",
+            ""};
+  if (wall == "torus")
+    return {3,
+            0.025,
+            0.075,
+            -0.075,
+            "{box: {min: [-0.25, -0.25, -0.075], max: [0.25, 0.25, 0]}}",
+            "[{shape: torus, center: [0, 0, 0], axis: [0, 0, 1], major_radius: 0.15, "
+            "minor_radius: 0.075, fluid: inside}]",
+            ""};
+  if (wall == "nurbs_surface")
+    // A flat degree-1 patch reaching well beyond the periodic cell: the floor.
+    return {3,
+            0.02,
+            0.1,
+            0,
+            "{box: {min: [0, 0, 0], max: [0.24, 0.24, 0.1]}}",
+            "[{shape: nurbs_surface, degree: [1, 1], fluid: front, knots_u: [0, 0, 1, 1], "
+            "knots_v: [0, 0, 1, 1], control_points: [[[-0.3, -0.3, 0], [-0.3, 0.5, 0]], "
+            "[[0.5, -0.3, 0], [0.5, 0.5, 0]]]}]",
+            "{min: [0, 0, -0.1], max: [0.24, 0.24, 0.3], periodic: [true, true, false]}"};
+  const fs::path dir = scratch();
+  if (wall == "cad_box") {
+    write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.12, 0.12, 0.2)).Shape(),
+               dir / "box.step");
+    return {3,
+            0.02,
+            0.1,
+            0,
+            "{box: {min: [0, 0, 0], max: [0.12, 0.12, 0.1]}}",
+            fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", (dir / "box.step").string()),
+            ""};
+  }
+  if (wall == "cad_cylinder") {
+    // Radius 0.1 > 2h: at 0.07 (< 2h) mirror_beta's beta = (1 + d/R)/(1 - d/R) grows without
+    // bound for the particles near the axis, each of which mirrors across the side too; the
+    // run blew up (kinetic energy 52 M g H at 0.05 s, one particle put back).
+    write_step(BRepPrimAPI_MakeCylinder(0.1, 0.2).Shape(), dir / "cylinder.step");
+    return {3,
+            0.02,
+            0.1,
+            0,
+            "{box: {min: [-0.1, -0.1, 0], max: [0.1, 0.1, 0.1]}}",
+            fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]",
+                        (dir / "cylinder.step").string()),
+            ""};
+  }
+  if (wall == "stl_box") {
+    testing::write_ascii_stl((dir / "cube.stl").string(), testing::cube_mesh(0.08, 4));
+    return {3,
+            0.02,
+            0.08,
+            -0.08,
+            "{box: {min: [-0.08, -0.08, -0.08], max: [0.08, 0.08, 0]}}",
+            fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", (dir / "cube.stl").string()),
+            ""};
+  }
+  if (wall == "stl_sphere") {
+    testing::write_ascii_stl((dir / "ball.stl").string(), testing::icosphere(0.1, 3));
+    return {3,
+            0.02,
+            0.1,
+            -0.1,
+            "{box: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0]}}",
+            fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", (dir / "ball.stl").string()),
+            ""};
+  }
+  ADD_FAILURE() << "unknown wall " << wall;
+  return {};
+}
+
+YAML::Node make_case(const Container& s, const std::string& method) {
+  const std::string boundary = method == "integrals" ? std::string("{method: integrals}")
+                                                     : "{method: ghost, map: " + method + "}";
+  const double t_end = s.dim == 2 ? 0.2 : 0.05;
+  YAML::Node root = YAML::Load(fmt::format(
+      "{{name: matrix, dimension: {}, resolution: {{dx: {}, h_over_dx: 2}}, "
+      "fluids: [{{name: water, rho0: 1000, viscosity: 1.0e-3, region: {}}}], "
+      "initial: {{hydrostatic: {{depth: {}, bottom: {}}}}}, "
+      "eos: {{type: linear, c0: {:.6g}, p0: 0}}, density: {{method: continuity, delta_sph: 0.1}}, "
+      "gravity: {}, boundary: {}, time: {{end: {}, cfl: 0.25}}, "
+      "output: {{every: {}, vtk: false}}, analysis: {{hydrostatic: {{depth: {}, bottom: {}}}}}}}",
+      s.dim, s.dx, s.region, s.depth, s.bottom, 10 * std::sqrt(9.81 * s.depth),
+      s.dim == 2 ? "[0, -9.81]" : "[0, 0, -9.81]", boundary, t_end, t_end / 2, s.depth, s.bottom));
+  root["walls"] = YAML::Load(s.walls);
+  if (!s.domain.empty()) root["domain"] = YAML::Load(s.domain);
+  return root;
+}
+
+class WallMethod : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(WallMethod, HoldsWaterAtRest) {
+  const auto [wall, method] = GetParam();
+  const Container s = setup(wall);
+  const auto m = test::run_quiet(read_case(make_case(s, method), "matrix.yaml"), 1);
+  const double t_end = s.dim == 2 ? 0.2 : 0.05;
+  std::cout << fmt::format(
+      "matrix {} {}: particles {} projected {} contacts {} escaped {} p_deep {:.4f} p_all {:.4f} "
+      "ke_max {:.2e}\n",
+      wall, method, m["particles"].get<long>(), m["particles_projected"].get<long>(),
+      m["wall_contacts"].get<long>(), m["escaped_particles"].get<long>(),
+      m["pressure_l2_error_deep"].is_number() ? m["pressure_l2_error_deep"].get<double>() : -1.0,
+      m["pressure_l2_error"].get<double>(), m["kinetic_energy_max"].get<double>());
+  EXPECT_NEAR(m["time_reached"].get<double>(), t_end, 1e-9);
+  EXPECT_EQ(m["particles_projected"].get<long>(), 0);
+  EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
+  EXPECT_EQ(m["particles_removed"].get<long>(), 0);
+  // The hydrostatic pressure within 5 % of rho g H where the wall is flat and lies along the
+  // fill lattice (a box's corners and edges included, from `box` or a CAD solid): the cells
+  // marked "works" in docs/geometry.md. Elsewhere that table gives the measured figure and its
+  // cause (curved walls a few dx in radius across the lattice; integrals from the bare
+  // lattice, which hold the periodic floors only); asserted there: no particle crosses.
+  const bool flat = wall.rfind("plane", 0) == 0 || wall.rfind("box", 0) == 0 ||
+                    wall == "nurbs_surface" || wall == "cad_box";
+  const bool floor_only = wall == "plane_3d" || wall == "nurbs_surface";
+  if ((method != "integrals" && flat) || floor_only) {
+    EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), 0.05);
+  }
+}
+
+const std::vector<std::string> kMethods = {"mirror", "mirror_beta", "density_preserving",
+                                           "integrals"};
+
+INSTANTIATE_TEST_SUITE_P(
+    Walls2D, WallMethod,
+    ::testing::Combine(::testing::Values("plane_2d", "box_2d", "circle", "ellipse", "nurbs_circle"),
+                       ::testing::ValuesIn(kMethods)),
+    [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+INSTANTIATE_TEST_SUITE_P(
+    Walls3D, WallMethod,
+    ::testing::Combine(::testing::Values("plane_3d", "box_3d", "cylinder", "sphere", "torus",
+                                         "nurbs_surface", "cad_box", "cad_cylinder", "stl_box",
+                                         "stl_sphere"),
+                       ::testing::ValuesIn(kMethods)),
+    [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+}  // namespace
+}  // namespace curvsph

@@ -526,13 +526,17 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
                                    : Case::HaloRule::automatic;
 
   const Keys out = top.sub("output");
-  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields"});
+  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields", "restart"});
   c.output_every = out.non_negative("every", 0.0);
   c.probe_every = out.non_negative("probe_every", 0.0);
   c.write_vtk = out.boolean("vtk", true);
   c.output_float32 = out.choice("precision", {"float32", "float64"}, "float32") == "float32";
   c.output_zlib = out.choice("compress", {"zlib", "none"}, "zlib") == "zlib";
   c.output_fields = output_fields(out);
+  const std::string restart = out.choice("restart", {"last", "every", "none"}, "last");
+  c.output_restart = restart == "every"  ? Case::RestartFiles::every
+                     : restart == "none" ? Case::RestartFiles::none
+                                         : Case::RestartFiles::last;
 
   const YAML::Node probes = top.raw("probes");
   if (top.has("probes") && !probes.IsSequence()) top.fail("probes", "must be a list of probes");

@@ -62,17 +62,27 @@ class Restart : public testing::CommandTest {
     EXPECT_EQ(sa.header["analyses"], sc.header["analyses"]);
     EXPECT_EQ(sa.reals.size(), sc.reals.size());
     for (const auto& [name, v] : sa.reals) {
-      ASSERT_TRUE(sc.reals.count(name)) << name;
+      EXPECT_TRUE(sc.reals.count(name)) << name;
+      if (!sc.reals.count(name)) continue;
       const auto& w = sc.reals.at(name);
-      ASSERT_EQ(v.size(), w.size()) << name;
-      EXPECT_EQ(std::memcmp(v.data(), w.data(), 8 * v.size()), 0) << name;
+      EXPECT_EQ(v.size(), w.size()) << name;
+      if (v.size() == w.size()) {
+        EXPECT_EQ(std::memcmp(v.data(), w.data(), 8 * v.size()), 0) << name;
+      }
     }
-    for (const auto& [name, v] : sa.ints) EXPECT_EQ(v, sc.ints.at(name)) << name;
+    for (const auto& [name, v] : sa.ints) {
+      EXPECT_TRUE(sc.ints.count(name)) << name;
+      if (sc.ints.count(name)) {
+        EXPECT_EQ(v, sc.ints.at(name)) << name;
+      }
+    }
     // The restarted run numbers its snapshots after the one it started from.
     const int from = sb.header["snapshot_index"].get<int>();
     const auto entries = io::PvdSeries::read(c / "series.pvd");
     EXPECT_FALSE(entries.empty());
-    if (!entries.empty()) EXPECT_EQ(entries.front().file, fmt_index(from + 1));
+    if (!entries.empty()) {
+      EXPECT_EQ(entries.front().file, fmt_index(from + 1));
+    }
     const auto ma = nlohmann::json::parse(read(a / "metrics.json"));
     const auto mc = nlohmann::json::parse(read(c / "metrics.json"));
     return {ma, mc};
@@ -99,8 +109,8 @@ TEST_F(Restart, ShiftingTaylorGreenBitForBitAcrossAResort) {
 
 // Ghost particles (Poiseuille channel, summation density), stopped between re-sorts.
 TEST_F(Restart, GhostPoiseuilleBitForBit) {
-  const auto [ma, mc] = straight_and_restarted(
-      kCases / "poiseuille_2d.yaml", "--set time.end=0.004 --set output.every=0.0015", 13);
+  const auto [ma, mc] = straight_and_restarted(kCases / "poiseuille_2d.yaml",
+                                               "--set time.end=0.01 --set output.every=0.0035", 13);
   EXPECT_EQ(ma["steps"], mc["steps"]);
 }
 
@@ -108,8 +118,8 @@ TEST_F(Restart, GhostPoiseuilleBitForBit) {
 TEST_F(Restart, IntegralsHydrostaticBitForBit) {
   const auto [ma, mc] = straight_and_restarted(
       kCases / "hydrostatic_tank.yaml",
-      "--set resolution.dx=0.05 --set setup.relax.max_steps=0 --set time.end=0.006 "
-      "--set output.every=0.002",
+      "--set resolution.dx=0.05 --set setup.relax.max_steps=0 --set time.end=0.02 "
+      "--set output.every=0.007",
       7);
   EXPECT_EQ(ma["steps"], mc["steps"]);
 }

@@ -228,7 +228,22 @@ Case read_case(const std::filesystem::path& path, const std::vector<std::string>
   return read_case(root, path);
 }
 
+namespace {
+Case read_case_tree(YAML::Node root, const std::filesystem::path& path);
+}  // namespace
+
 Case read_case(YAML::Node root, const std::filesystem::path& path) {
+  // A value yaml-cpp cannot convert where a key reader did not expect it (a tagged mapping
+  // key such as `!periodic:`, found by fuzz/fuzz_case) is bad input, not an internal error.
+  try {
+    return read_case_tree(std::move(root), path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path.string(), "", std::string("cannot read the YAML: ") + e.what());
+  }
+}
+
+namespace {
+Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
   Case c;
   c.file = path;
   c.root = root;
@@ -584,5 +599,6 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     top.fail("analysis", "must be a mapping of analysis names to their parameters");
   return c;
 }
+}  // namespace
 
 }  // namespace curvsph

@@ -17,6 +17,7 @@
 #include <Interface_CheckIterator.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
@@ -265,14 +266,24 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
         std::move(v), std::move(t),
         fs == cad::FluidSide::inside ? TriMeshWall::Side::inside : TriMeshWall::Side::outside)};
   }
-  const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
-  std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
-  if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
-  // A closed shell (all its faces kept) is one wall: the side of a point is then a property of
-  // the solid, not of whichever face is nearest (docs/geometry.md, CAD solids).
-  if (faces.empty() && cad::is_closed_shell(shape))
-    return {cad::make_solid_wall(shape, walls, fs, scale, path.filename().string())};
-  return walls;
+  // OpenCASCADE reports a geometry it cannot build (a Standard_ConstructionError from
+  // Geom_RectangularTrimmedSurface on a corrupt STEP face, found by fuzz/fuzz_cad, seed
+  // fuzz/corpus/cad/step_trimmed_surface_error.bin) with its own exceptions, not
+  // std::exception: without this they ended the program (abort) instead of exit 2.
+  try {
+    const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
+    std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
+    if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
+    // A closed shell (all its faces kept) is one wall: the side of a point is then a property
+    // of the solid, not of whichever face is nearest (docs/geometry.md, CAD solids).
+    if (faces.empty() && cad::is_closed_shell(shape))
+      return {cad::make_solid_wall(shape, walls, fs, scale, path.filename().string())};
+    return walls;
+  } catch (const Standard_Failure& e) {
+    throw InputError(file, ctx.key("file"),
+                     fmt::format("OpenCASCADE cannot build the geometry of '{}': {} ({})",
+                                 path.string(), e.GetMessageString(), e.DynamicType()->Name()));
+  }
 }
 
 }  // namespace curvsph

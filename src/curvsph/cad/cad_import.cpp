@@ -163,6 +163,11 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
     set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read STEP file '{}'", path));
+    // Entities the loader failed on (an unresolved reference is left null, which OCCT's
+    // transfer dereferences: seed fuzz/corpus/cad/step_edge_without_element.bin).
+    if (!reader.WS()->ModelCheckList().IsEmpty(Standard_True))
+      throw InputError(file, key,
+                       fmt::format("STEP file '{}' is corrupt: entities failed to load", path));
     reader.TransferRoots();
     shape = reader.OneShape();
   } else if (ext == ".iges" || ext == ".igs") {

@@ -7,7 +7,7 @@ PYTHON ?= /usr/bin/python3
 # make install PREFIX=$HOME/.local: where `cmake --install` puts bin/curvsph and share/curvsph.
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build install demo demo-mpi test bench validate keys format tidy clean
+.PHONY: all deps configure build install demo demo-mpi test bench validate keys format tidy clean fuzz asan
 
 all: build
 
@@ -54,6 +54,27 @@ format:
 
 tidy: build
 	find src -name '*.cpp' | xargs clang-tidy -p $(BUILD) --quiet
+
+# libFuzzer harnesses of fuzz/ (clang, AddressSanitizer + UBSan) in their own build
+# directory, each run for FUZZ_SECONDS from its seed corpus (README "Fuzzing and sanitizers").
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCURVSPH_FUZZ=ON -DCURVSPH_MPI=OFF $(CMAKE_FLAGS)
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_all
+	cd $(FUZZ_BUILD) && ctest --output-on-failure -L fuzz
+	scripts/run-fuzz $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+# The unit tests under AddressSanitizer + UBSan (build-asan, -O1 -g): any report fails them.
+ASAN_BUILD ?= build-asan
+asan: deps
+	cmake -S . -B $(ASAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+	  -DCURVSPH_SANITIZE=ON -DCURVSPH_MPI=OFF $(CMAKE_FLAGS)
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 OMP_NUM_THREADS=2 \
+	  ctest --output-on-failure -j $(JOBS) -L unit --timeout 1800
 
 clean:
 	rm -rf $(BUILD)

@@ -32,6 +32,12 @@ class Analysis {
                                   const InstabilityError& /*e*/) {
     return false;
   }
+  // What observe() accumulated since t = 0, for `run --restart` (the restart state,
+  // solver/restart_state.hpp), so that a restarted run's figures measure from the original
+  // t = 0; and back (a state of the wrong shape throws nlohmann::json::exception). JSON
+  // doubles round-trip exactly. The default: nothing is kept between observations.
+  virtual nlohmann::json save_state() const { return nullptr; }
+  virtual void load_state(const nlohmann::json& /*state*/) {}
   // Adds the analysis' figures to metrics; may write its curves (CSV) into out_dir when
   // that is not empty.
   virtual void finish(double t, const Particles<D>& P, nlohmann::json& metrics,

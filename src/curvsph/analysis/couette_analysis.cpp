@@ -150,6 +150,23 @@ class CouetteAnalysis final : public Analysis<2> {
     }
   }
 
+  nlohmann::json save_state() const override {
+    return {{"density_error_t0", density_error_t0_},
+            {"density_t0", density_t0_},
+            {"times", times_},
+            {"abs_errors", abs_errors_},
+            {"profile_errors", profile_errors_},
+            {"rms", rms_}};
+  }
+  void load_state(const nlohmann::json& s) override {
+    s.at("density_error_t0").get_to(density_error_t0_);
+    s.at("density_t0").get_to(density_t0_);
+    s.at("times").get_to(times_);
+    s.at("abs_errors").get_to(abs_errors_);
+    s.at("profile_errors").get_to(profile_errors_);
+    s.at("rms").get_to(rms_);
+  }
+
  private:
   struct Polar {
     double r, vt, vr;

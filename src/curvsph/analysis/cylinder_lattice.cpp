@@ -58,6 +58,9 @@ class CylinderLatticeAnalysis final : public Analysis<2> {
                        P.v[i].y());
   }
 
+  nlohmann::json save_state() const override { return {{"history", history_}}; }
+  void load_state(const nlohmann::json& s) override { s.at("history").get_to(history_); }
+
  private:
   bool event_ = false, blowup_ = false;
   double event_time_ = 0;

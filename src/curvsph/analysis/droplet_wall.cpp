@@ -80,6 +80,18 @@ class DropletWall final : public Analysis<2> {
       }
   }
 
+  // last_ is the latest observation's measurement: the run observes again before finish().
+  nlohmann::json save_state() const override {
+    return {
+        {"started", started_}, {"mass0", mass0_}, {"crossings", crossings_}, {"history", history_}};
+  }
+  void load_state(const nlohmann::json& s) override {
+    s.at("started").get_to(started_);
+    s.at("mass0").get_to(mass0_);
+    s.at("crossings").get_to(crossings_);
+    s.at("history").get_to(history_);
+  }
+
  private:
   static double angle(const std::optional<MeasuredAngle>& a) {
     return a ? a->theta_deg : std::nan("");

@@ -89,6 +89,15 @@ class HydrostaticAnalysis final : public Analysis<D> {
     m["t_end_reached"] = t * tau;
   }
 
+  nlohmann::json save_state() const override {
+    return {{"times", times_}, {"ke", ke_}, {"perr", perr_}};
+  }
+  void load_state(const nlohmann::json& s) override {
+    s.at("times").get_to(times_);
+    s.at("ke").get_to(ke_);
+    s.at("perr").get_to(perr_);
+  }
+
  private:
   double exact(double y) const { return std::max(0.0, hs_.pressure(y)); }
   // RMS over the particles at least `below` under the surface (all: below < 0).

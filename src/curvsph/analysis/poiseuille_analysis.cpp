@@ -102,6 +102,12 @@ class PoiseuilleAnalysis final : public Analysis<2> {
     }
   }
 
+  nlohmann::json save_state() const override { return {{"times", times_}, {"errors", errors_}}; }
+  void load_state(const nlohmann::json& s) override {
+    s.at("times").get_to(times_);
+    s.at("errors").get_to(errors_);
+  }
+
  private:
   double y_of(const Particles<2>& P, std::size_t i) const {
     return (P.x[i].cast<double>() - s_.origin).dot(s_.normal);

@@ -110,6 +110,26 @@ class SurgeFrontAnalysis final : public Analysis<2> {
     for (const auto& h : history_) out << fmt::format("{:.6g},{:.6g},{:.6g}\n", h.T, h.Z, h.H);
   }
 
+  nlohmann::json save_state() const override {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const Row& r : history_) rows.push_back({r.T, r.Z, r.H});
+    const auto opt = [](const std::optional<double>& v) {
+      return v ? nlohmann::json(*v) : nullptr;
+    };
+    return {{"wall", opt(wall_)}, {"width", opt(width_)}, {"far", opt(far_)}, {"history", rows}};
+  }
+  void load_state(const nlohmann::json& s) override {
+    const auto opt = [&](const char* k) {
+      return s.at(k).is_null() ? std::optional<double>() : s.at(k).get<double>();
+    };
+    wall_ = opt("wall");
+    width_ = opt("width");
+    far_ = opt("far");
+    history_.clear();
+    for (const auto& r : s.at("history"))
+      history_.push_back({r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>()});
+  }
+
  private:
   struct Row {
     double T, Z, H;

@@ -264,6 +264,9 @@ class ThrottledPipeAnalysis final : public Analysis<2> {
       fh << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", h[0], h[1], h[2], rho0_ * h[1] / mu_);
   }
 
+  nlohmann::json save_state() const override { return {{"history", history_}}; }
+  void load_state(const nlohmann::json& s) override { s.at("history").get_to(history_); }
+
  private:
   // Q(x) at every section (eq. 47), their mean and (max - min)/mean.
   void fluxes() {

@@ -67,8 +67,10 @@ const CommandRegistration reg{Command{
       sub.add_flag("--quiet,-q", args->quiet,
                    "no progress line and no set-up stage lines (warnings are still printed)");
       sub.add_option("--restart", args->restart,
-                     "start from a snapshot (particles_NNNNNN.vtp) of an earlier run of the same "
-                     "case, at its time in the series.pvd beside it")
+                     "continue an earlier run of the same case from a snapshot "
+                     "(particles_NNNNNN.vtp) and the restart state beside it "
+                     "(particles_NNNNNN.restart, output.restart), bit for bit; write to a new "
+                     "--out: the snapshots are numbered after it")
           ->check(CLI::ExistingFile);
       sub.add_flag("--overwrite", args->overwrite,
                    "write into an output directory that holds another run's files, removing "

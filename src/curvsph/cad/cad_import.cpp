@@ -9,13 +9,21 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <IGESSolid_Face.hxx>
+#include <IGESSolid_Loop.hxx>
+#include <IGESSolid_ManifoldSolid.hxx>
+#include <IGESSolid_Shell.hxx>
+#include <Interface_CheckIterator.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <UnitsMethods.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -113,6 +121,40 @@ nurbs::NurbsSurface to_nurbs(const TopoDS_Face& face, double scale) {
 
 }  // namespace
 
+namespace {
+
+// OCCT's IGES transfer dereferences the entities a B-rep solid, shell, face or loop points to
+// without checking them: a corrupt file whose pointer names no entity (found by fuzz/fuzz_cad,
+// seed fuzz/corpus/cad/iges_shell_without_face.bin) crashed the run in
+// IGESSolid_Face::Surface(). Refuse such a model before the transfer.
+void check_iges_references(const Handle(IGESData_IGESModel) & model, const std::string& path,
+                           const std::string& file, const std::string& key) {
+  if (model.IsNull()) throw InputError(file, key, fmt::format("no IGES model in '{}'", path));
+  auto missing = [&](Standard_Integer entity, const char* what) {
+    throw InputError(file, key,
+                     fmt::format("IGES file '{}' is corrupt: entity {} refers to a missing {}",
+                                 path, entity, what));
+  };
+  for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
+    const Handle(Standard_Transient) e = model->Value(i);
+    if (const auto solid = Handle(IGESSolid_ManifoldSolid)::DownCast(e); !solid.IsNull()) {
+      if (solid->Shell().IsNull()) missing(i, "shell");
+      for (Standard_Integer k = 1; k <= solid->NbVoidShells(); ++k)
+        if (solid->VoidShell(k).IsNull()) missing(i, "void shell");
+    }
+    if (const auto shell = Handle(IGESSolid_Shell)::DownCast(e); !shell.IsNull())
+      for (Standard_Integer k = 1; k <= shell->NbFaces(); ++k)
+        if (shell->Face(k).IsNull()) missing(i, "face");
+    if (const auto face = Handle(IGESSolid_Face)::DownCast(e); !face.IsNull()) {
+      if (face->Surface().IsNull()) missing(i, "surface");
+      for (Standard_Integer k = 1; k <= face->NbLoops(); ++k)
+        if (face->Loop(k).IsNull()) missing(i, "loop");
+    }
+  }
+}
+
+}  // namespace
+
 TopoDS_Shape read_brep(const std::string& path, const std::string& file, const std::string& key) {
   const std::string ext = lower_ext(path);
   if (!std::filesystem::exists(path))
@@ -123,6 +165,11 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
     set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read STEP file '{}'", path));
+    // Entities the loader failed on (an unresolved reference is left null, which OCCT's
+    // transfer dereferences: seed fuzz/corpus/cad/step_edge_without_element.bin).
+    if (!reader.WS()->ModelCheckList().IsEmpty(Standard_True))
+      throw InputError(file, key,
+                       fmt::format("STEP file '{}' is corrupt: entities failed to load", path));
     check_step_surfaces(reader, path, file, key);
     reader.TransferRoots();
     shape = reader.OneShape();
@@ -132,6 +179,11 @@ TopoDS_Shape read_brep(const std::string& path, const std::string& file, const s
     set_session_unit_metre();
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw InputError(file, key, fmt::format("cannot read IGES file '{}'", path));
+    // Entities the loader failed on (a list it could not read is left null inside them).
+    if (!reader.WS()->ModelCheckList().IsEmpty(Standard_True))
+      throw InputError(file, key,
+                       fmt::format("IGES file '{}' is corrupt: entities failed to load", path));
+    check_iges_references(reader.IGESModel(), path, file, key);
     reader.TransferRoots();
     shape = reader.OneShape();
   } else {
@@ -221,14 +273,24 @@ std::vector<WallPtr<3>> make_cad_walls(const YAML::Node& node, const std::string
         std::move(v), std::move(t),
         fs == cad::FluidSide::inside ? TriMeshWall::Side::inside : TriMeshWall::Side::outside)};
   }
-  const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
-  std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
-  if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
-  // A closed shell (all its faces kept) is one wall: the side of a point is then a property of
-  // the solid, not of whichever face is nearest (docs/geometry.md, CAD solids).
-  if (faces.empty() && cad::is_closed_shell(shape))
-    return {cad::make_solid_wall(shape, walls, fs, scale, path.filename().string())};
-  return walls;
+  // OpenCASCADE reports a geometry it cannot build (a Standard_ConstructionError from
+  // Geom_RectangularTrimmedSurface on a corrupt STEP face, found by fuzz/fuzz_cad, seed
+  // fuzz/corpus/cad/step_trimmed_surface_error.bin) with its own exceptions, not
+  // std::exception: without this they ended the program (abort) instead of exit 2.
+  try {
+    const TopoDS_Shape shape = cad::read_brep(path.string(), file, ctx.key("file"));
+    std::vector<WallPtr<3>> walls = cad::faces_to_walls(shape, fs, scale, faces);
+    if (walls.empty()) throw InputError(file, ctx.key("file"), "no faces selected");
+    // A closed shell (all its faces kept) is one wall: the side of a point is then a property
+    // of the solid, not of whichever face is nearest (docs/geometry.md, CAD solids).
+    if (faces.empty() && cad::is_closed_shell(shape))
+      return {cad::make_solid_wall(shape, walls, fs, scale, path.filename().string())};
+    return walls;
+  } catch (const Standard_Failure& e) {
+    throw InputError(file, ctx.key("file"),
+                     fmt::format("OpenCASCADE cannot build the geometry of '{}': {} ({})",
+                                 path.string(), e.GetMessageString(), e.DynamicType()->Name()));
+  }
 }
 
 }  // namespace curvsph

@@ -260,7 +260,22 @@ Case read_case(const std::filesystem::path& path, const std::vector<std::string>
   return read_case(root, path);
 }
 
+namespace {
+Case read_case_tree(YAML::Node root, const std::filesystem::path& path);
+}  // namespace
+
 Case read_case(YAML::Node root, const std::filesystem::path& path) {
+  // A value yaml-cpp cannot convert where a key reader did not expect it (a tagged mapping
+  // key such as `!periodic:`, found by fuzz/fuzz_case) is bad input, not an internal error.
+  try {
+    return read_case_tree(std::move(root), path);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path.string(), "", std::string("cannot read the YAML: ") + e.what());
+  }
+}
+
+namespace {
+Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
   Case c;
   c.file = path;
   c.root = root;
@@ -571,13 +586,17 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
                                    : Case::HaloRule::automatic;
 
   const Keys out = top.sub("output");
-  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields"});
+  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields", "restart"});
   c.output_every = out.non_negative("every", 0.0);
   c.probe_every = out.non_negative("probe_every", 0.0);
   c.write_vtk = out.boolean("vtk", true);
   c.output_float32 = out.choice("precision", {"float32", "float64"}, "float32") == "float32";
   c.output_zlib = out.choice("compress", {"zlib", "none"}, "zlib") == "zlib";
   c.output_fields = output_fields(out);
+  const std::string restart = out.choice("restart", {"last", "every", "none"}, "last");
+  c.output_restart = restart == "every"  ? Case::RestartFiles::every
+                     : restart == "none" ? Case::RestartFiles::none
+                                         : Case::RestartFiles::last;
 
   const YAML::Node probes = top.raw("probes");
   if (top.has("probes") && !probes.IsSequence()) top.fail("probes", "must be a list of probes");
@@ -634,5 +653,6 @@ Case read_case(YAML::Node root, const std::filesystem::path& path) {
     top.fail("analysis", "must be a mapping of analysis names to their parameters");
   return c;
 }
+}  // namespace
 
 }  // namespace curvsph

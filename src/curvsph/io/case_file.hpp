@@ -157,6 +157,11 @@ struct Case {
   bool output_float32 = true;
   bool output_zlib = true;
   std::vector<std::string> output_fields;
+  // output.restart: which snapshots get the restart state beside them (SNAPSHOT.restart,
+  // solver/restart_state.hpp, what `run --restart` reads): `last` (default; the previous one
+  // is removed when the next is written), `every`, or `none`.
+  enum class RestartFiles { none, last, every };
+  RestartFiles output_restart = RestartFiles::last;
   // parallel: MPI domain decomposition. Re-bisect when the largest rank owns more than
   // (1 + rebalance_imbalance) times the mean; check_conservation sums count, mass and ids
   // over the ranks after every migration (metrics: conservation_*).

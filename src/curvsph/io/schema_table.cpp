@@ -162,6 +162,7 @@ const Row kRows[] = {
 {"output.precision", "choice: float32 | float64", "", "float32", "-", "floating-point type of the snapshot arrays"},
 {"output.compress", "choice: zlib | none", "", "zlib", "-", "compression of the snapshot data"},
 {"output.fields", "list", "", "[position, velocity, pressure, density, mass, phase, id]", "-", "particle fields written (position always)"},
+{"output.restart", "choice: last | every | none", "", "last", "-", "which snapshots get the float64 restart state file beside them (particles_NNNNNN.restart) that --restart continues bit for bit from"},
 
 {"open_boundaries", "list", "", "optional", "-", "inflow and outflow planes (lines in 2-D) with buffer layers (solver/open_boundaries.hpp)"},
 {"open_boundaries.*.name", "string", "", "derived: open0, open1, ...", "-", "unique name"},

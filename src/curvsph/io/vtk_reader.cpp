@@ -2,6 +2,8 @@
 
 #include <zlib.h>
 
+#include <charconv>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -84,6 +86,9 @@ std::vector<std::byte> inflate_block(const std::string& file, std::size_t at, co
     const std::uint64_t cs = u64_at(file, at + 24 + 8 * b);
     const std::uint64_t us = (b + 1 == nb && last != 0) ? last : bs;
     if (cs > file.size() - src) fail("compressed data truncated");
+    // zlib expands at most about 1032:1: a larger block size is a corrupt header, which
+    // would otherwise allocate up to 2^64 bytes.
+    if (us / 1032 > cs + 64) fail("corrupt zlib block header");
     const std::size_t o = out.size();
     out.resize(o + us);
     uLongf len = static_cast<uLongf>(us);
@@ -95,6 +100,21 @@ std::vector<std::byte> inflate_block(const std::string& file, std::size_t at, co
     src += cs;
   }
   return out;
+}
+
+// A non-negative integer attribute (fails on a missing, malformed or out-of-range value
+// rather than letting std::stoull's exceptions through).
+template <class Fail>
+std::uint64_t count_attribute(const std::map<std::string, std::string>& attrs,
+                              const std::string& key, const Fail& fail) {
+  const auto it = attrs.find(key);
+  if (it == attrs.end()) fail("missing attribute " + key);
+  std::uint64_t v = 0;
+  const std::string& text = it->second;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size())
+    fail("attribute " + key + " is not a non-negative integer");
+  return v;
 }
 
 }  // namespace
@@ -140,8 +160,7 @@ VtkPolyData read_vtp(const std::filesystem::path& path) {
     const std::size_t piece = file.find("<Piece");
     if (piece == std::string::npos || piece > appended) fail("no <Piece>");
     const auto attrs = attributes(file.substr(piece, file.find('>', piece) - piece));
-    if (!attrs.count("NumberOfPoints")) fail("<Piece> without NumberOfPoints");
-    n_points = std::stoull(attrs.at("NumberOfPoints"));
+    n_points = count_attribute(attrs, "NumberOfPoints", fail);
   }
 
   // Walk the XML part, tracking the enclosing section of each DataArray.
@@ -166,10 +185,14 @@ VtkPolyData read_vtp(const std::filesystem::path& path) {
       fail("DataArray not in appended format");
     VtkArray a;
     a.name = attrs.count("Name") ? attrs.at("Name") : "";
+    if (!attrs.count("type")) fail("DataArray without type");
     a.type = vtk_type_from_name(attrs.at("type"));
-    a.components =
-        attrs.count("NumberOfComponents") ? std::stoi(attrs.at("NumberOfComponents")) : 1;
-    const std::size_t offset = std::stoull(attrs.at("offset"));
+    const std::uint64_t components =
+        attrs.count("NumberOfComponents") ? count_attribute(attrs, "NumberOfComponents", fail) : 1;
+    if (components < 1 || components > 64) fail("NumberOfComponents must be 1 to 64");
+    a.components = static_cast<int>(components);
+    const std::uint64_t offset = count_attribute(attrs, "offset", fail);
+    if (offset > file.size() - data0) fail("offset past the end of the appended data");
     a.bytes =
         zlib ? inflate_block(file, data0 + offset, fail) : raw_block(file, data0 + offset, fail);
     if (section == "Points") {

@@ -13,10 +13,9 @@
 #include "curvsph/core/stage_report.hpp"
 #include "curvsph/core/threads.hpp"
 #include "curvsph/io/probes.hpp"
-#include "curvsph/io/pvd_series.hpp"
-#include "curvsph/io/vtk_reader.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
+#include "curvsph/solver/restart_state.hpp"
 #include "curvsph/solver/run_guards.hpp"
 #include "curvsph/solver/snapshot_writer.hpp"
 #include "curvsph/solver/solver.hpp"
@@ -27,38 +26,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The time of a snapshot, from the series.pvd beside it (the writer names every snapshot
-// there); throws if the file is not listed.
-double snapshot_time(const fs::path& vtp) {
-  const fs::path pvd = vtp.parent_path() / "series.pvd";
-  for (const auto& e : io::PvdSeries::read(pvd))
-    if (fs::path(e.file).filename() == vtp.filename()) return e.time;
-  throw std::runtime_error("restart: '" + vtp.filename().string() + "' is not listed in '" +
-                           pvd.string() + "'");
-}
-
-// The state a restart continues from. Positions, velocities, masses and densities are the
-// scheme's state (accelerations, rates, pressures and number densities are recomputed by the
-// first step), and with several fluids the phase; a snapshot whose output.fields left one out
-// cannot continue the run and is refused (exit 2). Without ids the particles are numbered in
-// file order.
-template <int D>
-Particles<D> read_restart(const fs::path& vtp, const Case& c) {
-  const io::VtkPolyData vtk = io::read_vtp(vtp);
-  std::vector<std::string> need{"velocity", "mass", "density"};
-  if (c.fluids.size() > 1) need.push_back("phase");
-  if (!c.open_boundaries.empty()) need.push_back("buffer");  // which particles are buffers
-  for (const auto& f : need)
-    if (!vtk.find(f))
-      throw InputError(vtp.string(), "",
-                       "the snapshot has no '" + f +
-                           "' array; a restart needs position, velocity, mass and density (and "
-                           "phase with several fluids, buffer with open boundaries): write them "
-                           "with output.fields");
-  Particles<D> p = io::particles_from_vtk<D>(vtk);
-  if (!vtk.find("id"))
-    for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = static_cast<std::int64_t>(i);
-  return p;
+// The restart state beside `snapshot` (solver/restart_state.hpp), checked against the case.
+RestartState read_restart(const fs::path& snapshot, const Case& c) {
+  const fs::path file = restart_state_path(snapshot);
+  RestartState s = read_restart_state(file);
+  check_case(s, c, snapshot.string());
+  const auto it = s.header.find("snapshot");
+  const std::string listed = it != s.header.end() && it->is_string() ? it->get<std::string>() : "";
+  if (listed != snapshot.filename().string())
+    throw InputError(
+        file.string(), "snapshot",
+        "belongs to the snapshot '" + listed + "', not to '" + snapshot.filename().string() + "'");
+  const std::int64_t index = header_integer(s, "snapshot_index", file.string());
+  if (index < 0 || index >= 999999)
+    throw InputError(file.string(), "snapshot_index", "must be 0 to 999998");
+  for (const char* key : {"output_counter", "probe_counter"})
+    if (!(header_number(s, key, file.string()) >= 0))
+      throw InputError(file.string(), key, "must be a number >= 0");
+  return s;
 }
 
 // Writes to log.txt (when files are written) and nowhere else: stderr belongs to progress.
@@ -145,16 +130,39 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         analyses.push_back(make_analysis<D>(kv.first.as<std::string>(), kv.second, c));
   });
   Solver<D>& solver = *solver_ptr;
+  // A restart continues the stopped run's state (solver/restart_state.hpp): the solver's, the
+  // analyses' series and the output schedule; its snapshots are numbered after the one it
+  // starts from.
+  std::optional<RestartState> restored;
   if (!o.restart.empty()) {
-    const double t0 = snapshot_time(o.restart);
-    solver.restart(read_restart<D>(o.restart, c), t0);
-    log("restart from {} at t = {:.6g}", o.restart.string(), t0);
+    const std::string file = restart_state_path(o.restart).string();
+    mpi::agree_on_input(comm, [&] {
+      restored = read_restart(o.restart, c);
+      solver.load_state(*restored, file);
+      const nlohmann::json& states = restored->header["analyses"];
+      if (comm.root())
+        for (std::size_t k = 0; k < analyses.size(); ++k) {
+          const std::string key = "analyses." + std::to_string(k);
+          if (!states.is_array() || k >= states.size())
+            throw InputError(file, key, "missing: the snapshot's run had other analyses");
+          try {
+            analyses[k]->load_state(states[k]);
+          } catch (const nlohmann::json::exception& e) {
+            throw InputError(file, key, std::string("does not fit the analysis: ") + e.what());
+          }
+        }
+    });
+    log("restart from {} at t = {:.17g}, step {}", o.restart.string(), solver.time(),
+        solver.steps());
   }
 
   // A named snapshot (the state of an unstable run) is written even with output.vtk off:
   // DESIGN.md §3 promises an unstable run's last VTK snapshot, and studies that turn the
   // periodic output off are where a blow-up is otherwise left without one.
   SnapshotWriter<D> snapshots(c, o.out_dir, comm);
+  if (restored)
+    snapshots.continue_after(static_cast<int>(
+        header_integer(*restored, "snapshot_index", restart_state_path(o.restart).string())));
   auto write_snapshot = [&](const std::string& name) {
     if (!o.write_files || (!c.write_vtk && name.empty())) return;
     const auto t0 = std::chrono::steady_clock::now();
@@ -291,9 +299,49 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // Output and probe times after the start (t = 0, or a restart's time), multiples of every.
   OutputSchedule out_times(out_every, solver.time(), eps);
   OutputSchedule probe_times(probe_every, solver.time(), eps);
-  write_snapshot("");
-  if (any_probes) write_probes(solver.time());
-  observe();
+  // The restart state beside each numbered snapshot (output.restart), after the analyses
+  // observed its time; with `last` the previous one is removed once the new one is written.
+  fs::path last_restart_file;
+  auto analysis_states = [&] {
+    nlohmann::json states = nlohmann::json::array();
+    for (const auto& a : analyses) states.push_back(a->save_state());
+    return states;
+  };
+  auto write_restart = [&](nlohmann::json states) {
+    if (!o.write_files || !c.write_vtk || c.output_restart == Case::RestartFiles::none) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    RestartState s;
+    solver.save_state(s);  // [mpi] collective: gathers on rank 0
+    if (!writer) return;
+    stamp_case(s, c);
+    s.header["snapshot"] = snapshots.last_file();
+    s.header["snapshot_index"] = snapshots.last_index();
+    s.header["output_counter"] = out_times.counter();
+    s.header["probe_counter"] = probe_times.counter();
+    s.header["threads"] = omp_get_max_threads();
+    s.header["analyses"] = std::move(states);
+    const fs::path file = restart_state_path(o.out_dir / snapshots.last_file());
+    write_restart_state(file, s);
+    if (c.output_restart == Case::RestartFiles::last && !last_restart_file.empty() &&
+        last_restart_file != file)
+      fs::remove(last_restart_file);
+    last_restart_file = file;
+    solver.phase_times().output +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  if (restored) {
+    // The first run wrote this time's snapshot, probe row and observation: go on after them,
+    // on its schedule's counters.
+    const std::string file = restart_state_path(o.restart).string();
+    out_times.set_counter(header_number(*restored, "output_counter", file));
+    probe_times.set_counter(header_number(*restored, "probe_counter", file));
+    last_probe_time = last_observed_time = solver.time();
+  } else {
+    write_snapshot("");
+    if (any_probes) write_probes(solver.time());
+    observe();
+    write_restart(analysis_states());
+  }
 
   Progress progress(o.progress && comm.root(), t_end, n_particles);
   const auto loop_start = std::chrono::steady_clock::now();
@@ -317,6 +365,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
       if (out_times.reached(tn)) {
         write_snapshot("");
         observe();
+        write_restart(analysis_states());
         log("t = {:.6g}, step {}, dt = {:.4g}", tn, solver.steps(), solver.dt());
       }
       progress.update(solver.steps(), tn, solver.stable_step());
@@ -365,7 +414,12 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // snapshot (with output.vtk = false no snapshot is ever written).
   if (!unstable && solver.time() != last_observed_time) {
     write_snapshot("");
+    // The analyses' state before this extra observation (the time a cut or a signal stopped
+    // at, off the output schedule): a restart from here observes the scheduled times only,
+    // as the straight run does.
+    nlohmann::json states = analysis_states();
     observe();
+    write_restart(std::move(states));
   }
   // Likewise the probes: a run cut by time.max_steps or a signal ends its probe series with
   // the state it stopped at, as its snapshots.

@@ -26,7 +26,8 @@ bool is_run_output(const std::string& name) {
   if (name == "series.pvd" || name == "metrics.json" || name == "metrics_unstable.json" ||
       name == "probes.csv")
     return true;
-  const bool vtk = ends_with(name, ".vtp") || ends_with(name, ".pvtp");
+  const bool vtk = ends_with(name, ".vtp") || ends_with(name, ".pvtp") ||
+                   ends_with(name, ".restart");  // the restart state (restart_state.hpp)
   return vtk && (name.starts_with("particles_") || name.starts_with("boundary_"));
 }
 

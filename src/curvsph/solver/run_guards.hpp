@@ -51,6 +51,9 @@ class OutputSchedule {
  public:
   OutputSchedule(double every, double t_start, double eps);
   double next() const { return k_ * every_; }
+  // The counter k, for the restart state (solver/restart_state.hpp).
+  double counter() const { return k_; }
+  void set_counter(double k) { k_ = k; }
   // Whether t reached next(); if so the counter moves to the first time after t.
   bool reached(double t);
 

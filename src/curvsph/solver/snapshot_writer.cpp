@@ -83,6 +83,11 @@ void SnapshotWriter<D>::write(const Solver<D>& solver, const std::string& name) 
   if (comm_.root()) series_.add(solver.time(), boundary_file_, 1, "boundary");
 }
 
+template <int D>
+std::string SnapshotWriter<D>::last_file() const {
+  return fmt::format("particles_{:06d}.{}", index_ - 1, comm_.size() == 1 ? "vtp" : "pvtp");
+}
+
 template class SnapshotWriter<2>;
 template class SnapshotWriter<3>;
 

@@ -26,6 +26,11 @@ class SnapshotWriter {
   // Writes the state of `solver` at its time: `name` empty, the next numbered snapshot;
   // otherwise that file name (particles_unstable.vtp). Collective under MPI.
   void write(const Solver<D>& solver, const std::string& name);
+  // A restarted run numbers its snapshots after the one it starts from (never overwriting).
+  void continue_after(int index) { index_ = index + 1; }
+  // The index and the listed file (.vtp, .pvtp with MPI) of the last numbered snapshot.
+  int last_index() const { return index_ - 1; }
+  std::string last_file() const;
 
  private:
   // One block: the .vtp on one rank; with MPI a .pvtp naming one .vtp per rank. Returns the

@@ -164,8 +164,10 @@ void Solver<D>::resort() {
   // Re-sort every field by cell for memory locality. Done at the start of a step, on the
   // previous build, so no per-step scratch array has to follow the permutation.
   Stopwatch sw{times_.neighbors};
-  const auto& s = cells_.sorted();
+  // After load_state(): the order of the build the stopped run would have re-sorted by.
+  const auto& s = restart_order_.empty() ? cells_.sorted() : restart_order_;
   order_.assign(s.begin(), s.end());
+  restart_order_.clear();
   // [mpi] The build may have indexed halo copies, dropped since (indices >= size()).
   std::erase_if(order_, [n = P_.size()](std::size_t k) { return k >= n; });
   P_.permute(order_);
@@ -379,13 +381,22 @@ void Solver<D>::initialize() {
   walls_.set_time(t_);  // moving walls where they are at the start (a restart's time)
   // Every rank holds every particle before distribute(): the count and the removal box are
   // global.
-  initial_count_ = static_cast<std::int64_t>(P_.size());
-  removal_box_ = removal_box<D>(case_.has_domain, case_.domain_min, case_.domain_max,
-                                case_.periodic, P_.x, walls_, case_.dx);
+  if (!restored_) {  // else load_state() set them from the initial particles
+    initial_count_ = static_cast<std::int64_t>(P_.size());
+    removal_box_ = removal_box<D>(case_.has_domain, case_.domain_min, case_.domain_max,
+                                  case_.periodic, P_.x, walls_, case_.dx);
+  }
+  // New particles of the open boundaries are numbered above every id present.
   if (open_.active()) open_.number_from(P_);
   decomp_.distribute(P_);  // [mpi] keep this rank's sub-domain
   fluid_mass_initial_ = fluid_mass();
   build_neighbors();
+  if (restored_ && !decomp_.active()) {
+    // Every field as the stopped run left it, in its order: the next step goes on from there.
+    check_state();
+    return;
+  }
+  restart_order_.clear();  // [mpi] an order of every particle, not of this rank's
   resort();
   decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
@@ -397,7 +408,7 @@ void Solver<D>::initialize() {
   std::vector<Real> rho_set;
   if (!continuity_) rho_set.assign(P_.rho.begin(), P_.rho.begin() + owned);
   compute_rates(0);
-  if (!continuity_) {
+  if (!continuity_ && !restored_) {
     const auto& comm = decomp_.comm();
     double sum = 0;
     for (Index i = 0; i < owned; ++i) sum += static_cast<double>(P_.rho[i]) / rho_set[i];
@@ -504,6 +515,7 @@ template <int D>
 void Solver<D>::step(Real dt_cap) {
   decomp_.drop_halo(P_);  // [mpi] integrate owned particles only
   if (steps_ > 0 && steps_ % kResortEvery == 0) resort();
+  restart_order_.clear();  // only a re-sort at the first step after load_state() reads it
   const Real stable = stable_dt();
   check_dt(stable, std::min(stable, dt_cap));
   stable_step_ = stable;

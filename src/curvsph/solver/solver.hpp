@@ -25,6 +25,8 @@
 
 namespace curvsph {
 
+struct RestartState;  // solver/restart_state.hpp
+
 // Seconds spent per phase (DESIGN.md §6: measure, then optimise).
 struct PhaseTimes {
   double neighbors = 0, boundary = 0, density = 0, forces = 0, integrate = 0, output = 0;
@@ -44,6 +46,12 @@ class Solver {
   // Replaces the initial particles and time by a saved state (a snapshot of an earlier run of
   // the same case: positions, velocities, masses, densities); call before initialize().
   void restart(Particles<D> state, double t);
+  // The whole state for `run --restart` (solver/solver_restart.cpp): save_state() after a
+  // step; load_state() before initialize(), which then keeps the loaded state as it is (no
+  // re-sort, no rate pass) so that the next step repeats the straight run's on one rank.
+  // load_state throws InputError naming `file` on an inconsistent state.
+  void save_state(RestartState& s) const;
+  void load_state(const RestartState& s, const std::string& file);
   // Computes densities, pressures and accelerations of the initial state.
   void initialize();
   // Advances one time step of at most dt_cap (to land on output times); throws
@@ -163,6 +171,8 @@ class Solver {
   TransportVelocity<D> tv_;     // transport_velocity (off unless the case sets it)
   std::vector<Vec<D>> tv_acc_;  // scratch of its momentum term
   std::vector<std::size_t> order_;
+  bool restored_ = false;             // load_state() ran
+  std::vector<Index> restart_order_;  // the order the first resort() after it applies
   // The time is accumulated in double even in the float build: in float, t + dt stops
   // advancing once dt falls below half an ulp of t (3e-8 at t = 0.35), and a step capped to
   // land on an output time then never gets there.

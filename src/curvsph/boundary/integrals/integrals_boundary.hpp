@@ -8,6 +8,7 @@
 // than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
 // symmetric | tensile_control` chooses the near-wall pressure gradient (items 2b and 2d of the
 // .cpp; symmetric by default).
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -54,6 +55,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   // Wall time of the gamma computation in prepare(): thread-seconds over the team size.
   double shepard_seconds_ = 0;
   void build_elements(const Particles<D>& P);
+  // Adds the reaction R of particle i's wall terms to the wall loads (the .cpp says how it
+  // is shared between walls).
+  void add_loads(Index i, const Vec<D>& R, const Vec<D>& xi, WallLoadSums<D>& loads) const;
   // The pair list of prepare() must belong to the particles passed to the wall passes.
   void check_prepared(const Particles<D>& P) const;
   // Calls f(b, r_ib = x_i - x_b (periodic image applied), r2) for the elements whose
@@ -80,9 +84,10 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   bool built_ = false;
 
   BoundaryElements<D> el_;
-  std::vector<Vec<D>> ex_, en_, eu_;  // element centre, normal (into the fluid), velocity
-  std::vector<Real> ea_;              // element area (length in 2-D)
-  CellList<D> elem_cells_;            // over element centres, radius 2h + max element radius
+  std::vector<Vec<D>> ex_, en_, eu_;   // element centre, normal (into the fluid), velocity
+  std::vector<Real> ea_;               // element area (length in 2-D)
+  std::vector<std::int32_t> wall_of_;  // element -> index of its wall in the WallSet
+  CellList<D> elem_cells_;             // over element centres, radius 2h + max element radius
 
   std::vector<Real> gamma_;
   std::vector<Real> p_wall_;

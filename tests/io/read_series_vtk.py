@@ -1,7 +1,7 @@
 """Reads a curvsph series with VTK's own Python module (Debian python3-vtk9), as ParaView
 would: the DataSet entries of series.pvd (time, part, name, file) and each file through
 vtkXMLGenericDataObjectReader. Prints one JSON object: per entry its time, part, name, file,
-number of points and {array name: [tuples, components, sum of all values as VTK decoded
+number of points, verts, lines and polys, and {array name: [tuples, components, sum of all values as VTK decoded
 them, the same sum as scripts/vtp.py decodes them (.vtp files only, else null)]}. Exit 4
 when VTK cannot be imported (the test skips then), 1 on a read error."""
 import json
@@ -52,5 +52,6 @@ for ds in ET.parse(pvd).getroot().iter("DataSet"):
     entries.append({"time": float(ds.get("timestep")), "part": int(ds.get("part")),
                     "name": ds.get("name", ""), "file": ds.get("file"),
                     "points": out.GetNumberOfPoints(), "verts": out.GetNumberOfVerts(),
+                    "lines": out.GetNumberOfLines(), "polys": out.GetNumberOfPolys(),
                     "arrays": arrays})
 print(json.dumps(entries))

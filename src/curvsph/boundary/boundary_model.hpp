@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "curvsph/boundary/wall_images.hpp"
+#include "curvsph/boundary/wall_loads.hpp"
 #include "curvsph/core/particles.hpp"
 #include "curvsph/geometry/wall.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -78,6 +79,15 @@ class BoundaryModel {
   // Wall images of the last prepare() for pair terms outside the model (surface tension).
   virtual WallImages<D> images() const { return {}; }
   virtual void append_output(std::vector<Vec<D>>& /*x*/, std::vector<int>& /*kind*/) const {}
+
+  // Wall loads (forces.csv, wall_loads.hpp): with `sums` set (reset by the caller for the
+  // particles that count and the current walls), the next add_accelerations() also adds to it
+  // the reaction of every wall term it adds, per wall of the set; nullptr (the default): not
+  // computed. The model's pass stays the one neighbour sweep.
+  void track_loads(WallLoadSums<D>* sums) { loads_ = sums; }
+
+ protected:
+  WallLoadSums<D>* loads_ = nullptr;
 };
 
 // Builds the model named by case.boundary.method ("ghost", "integrals"); nullptr for "none".

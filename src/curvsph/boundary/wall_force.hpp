@@ -39,10 +39,10 @@ struct WallForce {
 // The push on a particle at x from every wall closer than the law's range, face by face for a
 // box with the fluid inside (a particle in a corner of a tank is pushed off the floor and the
 // side wall at once; the nearest wall alone would let it sink into the farther one), the
-// nearest point of any other wall.
-template <int D>
-Vec<D> wall_force_push(const WallSet<D>& walls, const Vec<D>& xi, const WallForce& law) {
-  Vec<D> push = Vec<D>::Zero();
+// nearest point of any other wall: f(k, push, foot) for each wall k that pushes, with the
+// foot point it pushes from (the wall loads take its reaction there).
+template <int D, class F>
+void wall_force_each(const WallSet<D>& walls, const Vec<D>& xi, const WallForce& law, F&& f) {
   const VecD<D> x = xi.template cast<double>();
   const double range = static_cast<double>(law.range);
   for (std::size_t k = 0; k < walls.size(); ++k) {
@@ -50,16 +50,31 @@ Vec<D> wall_force_push(const WallSet<D>& walls, const Vec<D>& xi, const WallForc
     if (box && box->side() == FluidSide::inside) {
       for (int a = 0; a < D; ++a) {
         const double lo = x[a] - box->min()[a], hi = box->max()[a] - x[a];
-        if (lo < range) push[a] += law.magnitude(static_cast<Real>(lo));
-        if (hi < range) push[a] -= law.magnitude(static_cast<Real>(hi));
+        VecD<D> foot = x;
+        if (lo < range) {
+          foot[a] = box->min()[a];
+          f(k, Vec<D>(law.magnitude(static_cast<Real>(lo)) * Vec<D>::Unit(a)), foot);
+        }
+        if (hi < range) {
+          foot[a] = box->max()[a];
+          f(k, Vec<D>(-law.magnitude(static_cast<Real>(hi)) * Vec<D>::Unit(a)), foot);
+        }
       }
       continue;
     }
     if (walls[k].distance_lower_bound(x) >= range) continue;
     const WallPoint<D> p = walls[k].closest(x);
     if (p.distance < range)
-      push += law.magnitude(static_cast<Real>(p.distance)) * p.normal.template cast<Real>();
+      f(k, Vec<D>(law.magnitude(static_cast<Real>(p.distance)) * p.normal.template cast<Real>()),
+        p.foot);
   }
+}
+
+// The sum of wall_force_each's pushes.
+template <int D>
+Vec<D> wall_force_push(const WallSet<D>& walls, const Vec<D>& xi, const WallForce& law) {
+  Vec<D> push = Vec<D>::Zero();
+  wall_force_each(walls, xi, law, [&](std::size_t, const Vec<D>& p, const VecD<D>&) { push += p; });
   return push;
 }
 

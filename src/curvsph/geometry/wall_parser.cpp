@@ -164,18 +164,41 @@ std::vector<WallPtr<D>> parse_wall(const YAML::Node& node, const std::string& fi
   // (the schema's range), so that `geometry` and `shepard` refuse what `run` refuses.
   if (yaml::has(node, "contact_angle"))
     yaml::read_number(node["contact_angle"], file, yaml::join(key, "contact_angle"));
+  // `name` and `moment_center` label it in the outputs (forces.csv, the walls output): none
+  // is a shape key, and the shape factory sees the element without them.
   // (Copy-constructed, never assigned: assigning a YAML::Node rebinds the node it shares.)
-  const YAML::Node shape_node = yaml::has(node, "contact_angle") ? [&] {
+  static constexpr const char* kCommon[] = {"contact_angle", "name", "moment_center"};
+  const bool any_common = std::any_of(std::begin(kCommon), std::end(kCommon),
+                                      [&](const char* k) { return yaml::has(node, k); });
+  const YAML::Node shape_node = any_common ? [&] {
     YAML::Node copy = YAML::Clone(node);
-    copy.remove("contact_angle");
+    for (const char* k : kCommon) copy.remove(k);
     return copy;
   }()
-                                                                  : node;
+                                           : node;
   std::vector<WallPtr<D>> walls = make(WallSource{shape_node, file, key, base_dir});
   if (yaml::has(node, "motion")) {
     const WallMotion<D> m = parse_wall_motion<D>(node["motion"], file, yaml::join(key, "motion"));
     // The geometry moves (geometry/moving_wall.hpp); static walls stay undecorated.
     for (auto& w : walls) w = std::make_shared<MovingWall<D>>(std::move(w), m);
+  }
+  std::string name;
+  if (yaml::has(node, "name")) {
+    const std::string k = yaml::join(key, "name");
+    name = yaml::read_string(node["name"], file, k);
+    if (name.empty() || name.find_first_of(",\"\n\r") != std::string::npos)
+      throw InputError(file, k,
+                       fmt::format("'{}' is not a usable name (non-empty, without commas, quotes "
+                                   "or line breaks: it heads columns of forces.csv)",
+                                   name));
+  }
+  VecD<D> centre = VecD<D>::Zero();
+  if (yaml::has(node, "moment_center"))
+    centre = yaml::read_key(node, "moment_center", file, key, yaml::read_vec<D>);
+  for (const auto& w : walls) {
+    auto& wall = const_cast<Wall<D>&>(*w);  // fresh, not yet shared (attach_motion)
+    wall.name = name;
+    wall.moment_center = centre;
   }
   return walls;
 }
@@ -185,9 +208,25 @@ WallSet<D> parse_walls(const YAML::Node& walls, const std::string& file,
                        const std::filesystem::path& base_dir, const std::string& key) {
   const std::size_t n = yaml::require_list(walls, file, key);
   WallSet<D> set;
-  for (std::size_t i = 0; i < n; ++i)
-    for (auto& w : parse_wall<D>(walls[i], file, base_dir, yaml::join(key, i)))
+  std::vector<std::string> names;  // one per entry
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string entry = yaml::join(key, i);
+    std::vector<WallPtr<D>> made = parse_wall<D>(walls[i], file, base_dir, entry);
+    // Unnamed walls are wall0, wall1, ... after their entry (DESIGN.md §3); names are unique
+    // across entries (a CAD entry's walls share theirs).
+    std::string name =
+        made.empty() || made.front()->name.empty() ? fmt::format("wall{}", i) : made.front()->name;
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      throw InputError(file, yaml::join(entry, "name"),
+                       fmt::format("duplicate wall name '{}' (unnamed walls are wallN after "
+                                   "their place in the list)",
+                                   name));
+    names.push_back(name);
+    for (auto& w : made) {
+      const_cast<Wall<D>&>(*w).name = name;
       set.add(std::move(w));
+    }
+  }
   return set;
 }
 

@@ -586,9 +586,12 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
                                    : Case::HaloRule::automatic;
 
   const Keys out = top.sub("output");
-  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields", "restart"});
+  out.allow({"every", "probe_every", "vtk", "precision", "compress", "fields", "restart",
+             "forces_every", "boundary_points"});
   c.output_every = out.non_negative("every", 0.0);
   c.probe_every = out.non_negative("probe_every", 0.0);
+  if (out.has("forces_every")) c.forces_every = out.non_negative("forces_every");
+  c.write_boundary_points = out.boolean("boundary_points", true);
   c.write_vtk = out.boolean("vtk", true);
   c.output_float32 = out.choice("precision", {"float32", "float64"}, "float32") == "float32";
   c.output_zlib = out.choice("compress", {"zlib", "none"}, "zlib") == "zlib";

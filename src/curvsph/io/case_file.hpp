@@ -150,6 +150,13 @@ struct Case {
   double output_every = 0;  // 0: only first and last
   double probe_every = 0;   // 0: as output_every
   bool write_vtk = true;
+  // output.forces_every: the interval of forces.csv's rows (io/forces_csv.hpp); absent (< 0):
+  // at the probe times (probe_every, itself as output_every by default) when the case has
+  // walls; 0: no forces.csv.
+  double forces_every = -1;
+  // output.boundary_points: the ghost / wall-element points (boundary_*.vtp) beside each
+  // snapshot (true by default); the walls themselves are written whatever it says.
+  bool write_boundary_points = true;
   // output.precision (float32 | float64: the particle fields' floating arrays; positions stay
   // float64), output.compress (zlib | none) and output.fields (the Particles field names
   // written; position always), io/vtk_writer.hpp. The default fields are what a picture and

@@ -107,7 +107,8 @@ const Row kRows[] = {
 {"walls.*.knots_u", "list", "", "required", "-", "nurbs_surface knot vector along u (as knots)"},
 {"walls.*.knots_v", "list", "", "required", "-", "nurbs_surface knot vector along v (as knots)"},
 {"walls.*.tolerance", "number", "[0, inf)", "0", "m", "NURBS projection tolerance (0: automatic)"},
-{"walls.*.name", "string", "", "optional", "-", "label of a NURBS or CAD wall"},
+{"walls.*.name", "string", "", "derived: wallN (N: its place in walls)", "-", "unique name of the wall: forces.csv columns, the walls' output blocks (no commas, quotes or line breaks)"},
+{"walls.*.moment_center", "vector", "", "origin", "m", "point about which the wall's moment is taken (forces.csv)"},
 {"walls.*.file", "string", "", "required", "-", "CAD file (STEP, IGES, STL), relative to the case file"},
 {"walls.*.scale", "number", "[1e-6, 1e6]", "1", "-", "CAD coordinates times scale = metres"},
 {"walls.*.faces", "list", "[0, 1e9]", "all faces", "-", "CAD face indices to keep (0-based)"},
@@ -162,6 +163,8 @@ const Row kRows[] = {
 {"output.precision", "choice: float32 | float64", "", "float32", "-", "floating-point type of the snapshot arrays"},
 {"output.compress", "choice: zlib | none", "", "zlib", "-", "compression of the snapshot data"},
 {"output.fields", "list", "", "[position, velocity, pressure, density, mass, phase, id]", "-", "particle fields written (position always)"},
+{"output.forces_every", "number", "[0, inf)", "derived: the probe times when the case has walls", "s", "forces.csv interval (0: no forces.csv)"},
+{"output.boundary_points", "bool", "", "true", "-", "write the ghost / boundary-element points (boundary_*.vtp)"},
 {"output.restart", "choice: last | every | none", "", "last", "-", "which snapshots get the float64 restart state file beside them (particles_NNNNNN.restart) that --restart continues bit for bit from"},
 
 {"open_boundaries", "list", "", "optional", "-", "inflow and outflow planes (lines in 2-D) with buffer layers (solver/open_boundaries.hpp)"},

@@ -201,6 +201,18 @@ void VtkPolyData::write(const std::filesystem::path& path, const VtkWriteOptions
   VtkArray offsets{"offsets", index_type, 1, {}};
   auto fill = [&](auto zero) {
     using I = decltype(zero);
+    if (cells_ != Cells::verts) {  // the cells given (set_cells)
+      auto put = [](VtkArray& a, const std::vector<std::int64_t>& v) {
+        a.bytes.resize(v.size() * sizeof(I));
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          const I c = static_cast<I>(v[i]);
+          std::memcpy(a.bytes.data() + i * sizeof(I), &c, sizeof(I));
+        }
+      };
+      put(connectivity, cell_connectivity_);
+      put(offsets, cell_offsets_);
+      return;
+    }
     connectivity.bytes.resize(n * sizeof(I));
     offsets.bytes.resize(n * sizeof(I));
     for (std::size_t i = 0; i < n; ++i) {
@@ -221,8 +233,13 @@ void VtkPolyData::write(const std::filesystem::path& path, const VtkWriteOptions
          "header_type=\"UInt64\""
       << (options.zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
       << "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
-      << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\""
+      << (cells_ == Cells::verts ? n : 0) << "\" NumberOfLines=\""
+      << (cells_ == Cells::lines ? cell_offsets_.size() : 0) << "\" NumberOfStrips=\"0\" "
+      << "NumberOfPolys=\"" << (cells_ == Cells::polys ? cell_offsets_.size() : 0) << "\">\n";
+  const char* section = cells_ == Cells::lines   ? "Lines"
+                        : cells_ == Cells::polys ? "Polys"
+                                                 : "Verts";
   auto emit = [&](const VtkArray& a, const char* indent) {
     data_array_tag(xml, a, blob.size(), indent);
     append_block(blob, little_endian(a.bytes, vtk_type_size(a.type)), options.zlib);
@@ -231,10 +248,11 @@ void VtkPolyData::write(const std::filesystem::path& path, const VtkWriteOptions
   for (const auto& a : arrays_) emit(options.float32 ? narrowed(a) : a, "        ");
   xml << "      </PointData>\n      <Points>\n";
   emit(points_, "        ");
-  xml << "      </Points>\n      <Verts>\n";
+  xml << "      </Points>\n      <" << section << ">\n";
   emit(connectivity, "        ");
   emit(offsets, "        ");
-  xml << "      </Verts>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+  xml << "      </" << section
+      << ">\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
 
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -128,7 +128,20 @@ class VtkPolyData {
   // Internal use by the reader.
   void set_points_array(VtkArray a) { points_ = std::move(a); }
 
+  // Cells instead of one vertex per point (the walls output): polylines (2-D walls) or
+  // polygons (3-D walls), cell c made of the points connectivity[offsets[c-1] .. offsets[c])
+  // (offsets: the end of each cell, as VTK stores them).
+  enum class Cells { verts, lines, polys };
+  void set_cells(Cells kind, std::vector<std::int64_t> connectivity,
+                 std::vector<std::int64_t> offsets) {
+    cells_ = kind;
+    cell_connectivity_ = std::move(connectivity);
+    cell_offsets_ = std::move(offsets);
+  }
+
  private:
+  Cells cells_ = Cells::verts;
+  std::vector<std::int64_t> cell_connectivity_, cell_offsets_;
   VtkArray points_{"Points", VtkType::Float64, 3, {}};
   std::vector<VtkArray> arrays_;
 };

@@ -12,6 +12,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/stage_report.hpp"
 #include "curvsph/core/threads.hpp"
+#include "curvsph/io/forces_csv.hpp"
 #include "curvsph/io/probes.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/solver/progress.hpp"
@@ -171,6 +172,10 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
 
+  // Wall loads (io/forces_csv.hpp): at the forces times, and in metrics.json; computed by the
+  // boundary model's wall pass of the steps that land on those times (Solver::wall_loads).
+  const bool has_loads = solver.boundary() && !solver.walls().empty() && c.forces_every != 0;
+  if (has_loads) solver.want_wall_loads_from(solver.time());
   try {
     solver.initialize();
   } catch (const InstabilityError& e) {
@@ -299,6 +304,27 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   // Output and probe times after the start (t = 0, or a restart's time), multiples of every.
   OutputSchedule out_times(out_every, solver.time(), eps);
   OutputSchedule probe_times(probe_every, solver.time(), eps);
+  const double forces_every = c.forces_every > 0 ? c.forces_every : probe_every;
+  OutputSchedule force_times(forces_every, solver.time(), eps);
+  const WallGroups wall_groups = WallGroups::of(solver.walls());
+  std::unique_ptr<ForcesCsv> forces;
+  if (writer && has_loads)
+    forces = std::make_unique<ForcesCsv>((o.out_dir / "forces.csv").string(), wall_groups, D);
+  std::vector<WallLoad> loads_last, loads_sum(wall_groups.names.size());
+  long load_rows = 0;
+  double last_load_time = -1;
+  auto record_loads = [&] {
+    if (!has_loads || solver.wall_loads_time() != solver.time()) return;
+    last_load_time = solver.time();
+    loads_last = wall_groups.sum(solver.wall_loads());
+    for (std::size_t k = 0; k < loads_last.size(); ++k)
+      for (std::size_t a = 0; a < 3; ++a) {
+        loads_sum[k].force[a] += loads_last[k].force[a];
+        loads_sum[k].moment[a] += loads_last[k].moment[a];
+      }
+    ++load_rows;
+    if (forces) forces->write_row(solver.time(), solver.wall_loads());
+  };
   // The restart state beside each numbered snapshot (output.restart), after the analyses
   // observed its time; with `last` the previous one is removed once the new one is written.
   fs::path last_restart_file;
@@ -339,6 +365,7 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   } else {
     write_snapshot("");
     if (any_probes) write_probes(solver.time());
+    record_loads();
     observe();
     write_restart(analysis_states());
   }
@@ -358,10 +385,15 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
         break;
       }
       const double t = solver.time();
-      const double cap = std::min({t_end - t, out_times.next() - t, probe_times.next() - t});
+      double cap = std::min({t_end - t, out_times.next() - t, probe_times.next() - t});
+      if (has_loads) {
+        cap = std::min(cap, force_times.next() - t);
+        solver.want_wall_loads_from(std::min(force_times.next(), t_end) - eps);
+      }
       solver.step(static_cast<Real>(cap));
       const double tn = solver.time();
       if (probe_times.reached(tn) && any_probes) write_probes(tn);
+      if (force_times.reached(tn) || tn >= t_end - eps) record_loads();
       if (out_times.reached(tn)) {
         write_snapshot("");
         observe();
@@ -463,6 +495,20 @@ nlohmann::json run_typed(const Case& c, const RunOptions& o) {
   m["seconds_forces"] = comm.max(pt.forces);
   m["seconds_integrate"] = comm.max(pt.integrate);
   m["seconds_output"] = comm.max(pt.output);
+  // The wall loads: at the last forces time (forces.NAME.fx, ...) and their mean over the
+  // forces times (forces_mean.NAME.fx, ...), the start included.
+  if (load_rows > 0) {
+    for (std::size_t k = 0; k < wall_groups.names.size(); ++k) {
+      const auto names = load_components(D);
+      const auto last = load_values(loads_last[k], D), sum = load_values(loads_sum[k], D);
+      for (std::size_t a = 0; a < names.size(); ++a) {
+        m["forces." + wall_groups.names[k] + "." + names[a]] = last[a];
+        m["forces_mean." + wall_groups.names[k] + "." + names[a]] =
+            sum[a] / static_cast<double>(load_rows);
+      }
+    }
+    m["forces_time"] = last_load_time;
+  }
   with_all([&](const Particles<D>& all) {
     for (auto& a : analyses) a->finish(solver.time(), all, m, writer ? o.out_dir : fs::path());
   });

@@ -24,11 +24,12 @@ bool ends_with(const std::string& s, const std::string& tail) {
 // output there before the run starts.
 bool is_run_output(const std::string& name) {
   if (name == "series.pvd" || name == "metrics.json" || name == "metrics_unstable.json" ||
-      name == "probes.csv")
+      name == "probes.csv" || name == "forces.csv")
     return true;
   const bool vtk = ends_with(name, ".vtp") || ends_with(name, ".pvtp") ||
                    ends_with(name, ".restart");  // the restart state (restart_state.hpp)
-  return vtk && (name.starts_with("particles_") || name.starts_with("boundary_"));
+  return vtk && (name.starts_with("particles_") || name.starts_with("boundary_") ||
+                 name.starts_with("walls_"));
 }
 
 // "819 kB", "205 GB", "2.05e+06 TB".
@@ -98,6 +99,12 @@ void check_output_count(const Case& c, bool probe_rows, bool force) {
                                  c.t_end, c.output_every, snapshots, kMaxSnapshots));
   const double probe_every = c.probe_every > 0 ? c.probe_every : out_every;
   const double rows = output_count(c, probe_every);
+  if (c.forces_every > 0 && !(output_count(c, c.forces_every) <= kMaxProbeRows))
+    throw InputError(
+        c.file_name(), "output.forces_every",
+        fmt::format("time.end = {:g} / {:g} asks for {:.3g} rows of forces.csv, "
+                    "over the limit of {:.0e}; raise it or pass --force",
+                    c.t_end, c.forces_every, output_count(c, c.forces_every), kMaxProbeRows));
   if (probe_rows && !(rows <= kMaxProbeRows))
     throw InputError(c.file_name(), c.probe_every > 0 ? "output.probe_every" : "output.every",
                      fmt::format("time.end = {:g} / {:g} asks for {:.3g} probe rows, over the "

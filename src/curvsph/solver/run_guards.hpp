@@ -25,9 +25,9 @@ inline constexpr double kBytesPerParticle = 2048;
 // Checks the output directory and clears it on `overwrite`; creates it. Throws InputError
 // (key --out) when `dir` exists and is not a directory (a regular file, /dev/null), cannot be
 // created, or holds another run's files (series.pvd, metrics.json, metrics_unstable.json,
-// probes.csv, particles_* and boundary_* .vtp/.pvtp) and `overwrite` is off; with `overwrite`
-// those files are removed (others, log.txt included, are left). `restart`: the snapshot a run
-// starts from, which `overwrite` must not remove.
+// probes.csv, forces.csv, particles_*, boundary_* and walls_* .vtp/.pvtp) and `overwrite` is off;
+// with `overwrite` those files are removed (others, log.txt included, are left). `restart`: the
+// snapshot a run starts from, which `overwrite` must not remove.
 void prepare_output_dir(const std::filesystem::path& dir, bool overwrite,
                         const std::filesystem::path& restart);
 

@@ -2,9 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
+#include "curvsph/io/forces_csv.hpp"
 #include "curvsph/io/pvtp.hpp"
+#include "curvsph/io/walls_vtp.hpp"
 
 namespace curvsph {
 
@@ -29,7 +33,13 @@ SnapshotWriter<D>::SnapshotWriter(const Case& c, fs::path out_dir, const mpi::Co
       comm_(comm),
       series_(out_dir_ / "series.pvd"),
       options_{c.output_float32, c.output_zlib},
-      fields_(c.output_fields) {}
+      fields_(c.output_fields),
+      boundary_points_(c.write_boundary_points),
+      dx_(c.dx),
+      h_(c.h()),
+      has_domain_(c.has_domain),
+      domain_min_(c.domain_min),
+      domain_max_(c.domain_max) {}
 
 template <int D>
 std::string SnapshotWriter<D>::write_block(const io::VtkPolyData& poly,
@@ -58,10 +68,18 @@ void SnapshotWriter<D>::write(const Solver<D>& solver, const std::string& name) 
       file);
   if (comm_.root()) series_.add(solver.time(), listed, 0, "particles");
 
+  write_boundary(solver, name, index);
+  write_walls(solver, name, index);
+}
+
+template <int D>
+void SnapshotWriter<D>::write_boundary(const Solver<D>& solver, const std::string& name,
+                                       int index) {
+  const bool parallel = comm_.size() > 1;
   // Ghosts / wall elements as a second block of the series (kind: 1 ghost, 2 element).
   // With MPI a rank's piece also holds the ghosts of its halo copies.
   const auto* b = solver.boundary();
-  if (!b) return;
+  if (!b || !boundary_points_) return;
   std::vector<Vec<D>> bx;
   std::vector<int> kind;
   b->append_output(bx, kind);
@@ -86,6 +104,59 @@ void SnapshotWriter<D>::write(const Solver<D>& solver, const std::string& name) 
 template <int D>
 std::string SnapshotWriter<D>::last_file() const {
   return fmt::format("particles_{:06d}.{}", index_ - 1, comm_.size() == 1 ? "vtp" : "pvtp");
+}
+
+template <int D>
+void SnapshotWriter<D>::write_walls(const Solver<D>& solver, const std::string& name, int index) {
+  const WallSet<D>& walls = solver.walls();
+  if (walls.empty()) return;
+  const WallGroups groups = WallGroups::of(walls);
+  bool moves = false;
+  for (std::size_t k = 0; k < walls.size(); ++k) moves = moves || walls[k].moves();
+  if (!moves && !wall_files_.empty()) {  // written once: listed again at this time
+    if (comm_.root())
+      for (std::size_t g = 0; g < wall_files_.size(); ++g)
+        series_.add(solver.time(), wall_files_[g], static_cast<int>(2 + g), groups.names[g]);
+    return;
+  }
+  // The clip box of infinite walls: the domain, or the particles' box (over every rank)
+  // grown by half its size and 4h, as the boundary integrals clip them.
+  Eigen::AlignedBox<double, D> clip;
+  if (has_domain_) {
+    clip = Eigen::AlignedBox<double, D>(domain_min_.head<D>(), domain_max_.head<D>());
+  } else {
+    std::vector<double> lo(D, std::numeric_limits<double>::infinity()), hi = lo;
+    const Particles<D>& P = solver.particles();
+    for (Index i = 0; i < solver.decomposition().owned(); ++i)
+      for (int a = 0; a < D; ++a) {
+        lo[static_cast<std::size_t>(a)] =
+            std::min(lo[static_cast<std::size_t>(a)], double(P.x[i][a]));
+        hi[static_cast<std::size_t>(a)] =
+            std::min(hi[static_cast<std::size_t>(a)], -double(P.x[i][a]));
+      }
+    comm_.min(lo);  // [mpi] collective
+    comm_.min(hi);
+    VecD<D> a, b;
+    for (int d = 0; d < D; ++d) {
+      a[d] = lo[static_cast<std::size_t>(d)];
+      b[d] = -hi[static_cast<std::size_t>(d)];
+    }
+    const VecD<D> grow = VecD<D>::Constant(4 * h_) + 0.5 * (b - a);
+    clip = Eigen::AlignedBox<double, D>(a - grow, b + grow);
+  }
+  if (!comm_.root()) return;
+  wall_files_.assign(groups.names.size(), "");
+  for (std::size_t g = 0; g < groups.names.size(); ++g) {
+    std::vector<const Wall<D>*> members;
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      if (groups.group[k] == g) members.push_back(&walls[k]);
+    const std::string file = !moves         ? fmt::format("walls_{}.vtp", g)
+                             : name.empty() ? fmt::format("walls_{}_{:06d}.vtp", g, index)
+                                            : fmt::format("walls_{}_{}", g, name);
+    wall_polydata(tessellate_walls<D>(members, dx_, clip)).write(out_dir_ / file, options_);
+    wall_files_[g] = file;
+    series_.add(solver.time(), file, static_cast<int>(2 + g), groups.names[g]);
+  }
 }
 
 template class SnapshotWriter<2>;

@@ -4,8 +4,9 @@
 // (boundary_NNNNNN.vtp, block "boundary"). Under MPI each block is a .pvtp naming one .vtp
 // piece per rank. The boundary file is written only when its content differs from the last
 // one written: wall elements (boundary integrals) are fixed, so one file serves every entry;
-// ghosts follow the fluid and get a file per snapshot. Encoding (precision, zlib, fields)
-// follows the case's output keys (io/vtk_writer.hpp).
+// ghosts follow the fluid and get a file per snapshot (output.boundary_points: false leaves
+// them out). Then one block per wall, named after it (io/walls_vtp.hpp). Encoding
+// (precision, zlib, fields) follows the case's output keys (io/vtk_writer.hpp).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -47,6 +48,18 @@ class SnapshotWriter {
   // do not change.
   std::string boundary_file_;
   std::vector<std::byte> boundary_bytes_;
+  bool boundary_points_ = true;  // output.boundary_points
+
+  // The walls (io/walls_vtp.hpp): one block per `walls:` entry, after the boundary block.
+  // Written once (walls_K.vtp) unless a wall moves (Wall::moves()): then at every snapshot
+  // (walls_K_NNNNNN.vtp). Rank 0 writes them.
+  void write_walls(const Solver<D>& solver, const std::string& name, int index);
+  // The ghosts / wall elements block (boundary_*.vtp).
+  void write_boundary(const Solver<D>& solver, const std::string& name, int index);
+  double dx_ = 0, h_ = 0;
+  bool has_domain_ = false;
+  Vec3d domain_min_ = Vec3d::Zero(), domain_max_ = Vec3d::Zero();
+  std::vector<std::string> wall_files_;  // per wall group: the file last written
 };
 
 }  // namespace curvsph

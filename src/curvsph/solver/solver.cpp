@@ -249,7 +249,28 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   if (boundary_) {
     Stopwatch sw{times_.boundary};
+    const bool loads = rates_time_ >= loads_from_;
+    if (loads) {
+      load_sums_.reset(decomp_.owned(), walls_);
+      boundary_->track_loads(&load_sums_);
+    }
     boundary_->add_accelerations(P_);
+    if (loads) {
+      boundary_->track_loads(nullptr);
+      loads_ = load_sums_.totals();
+      std::vector<double> flat;  // [mpi] one collective for every wall's six numbers
+      for (const WallLoad& l : loads_) {
+        flat.insert(flat.end(), l.force.begin(), l.force.end());
+        flat.insert(flat.end(), l.moment.begin(), l.moment.end());
+      }
+      if (decomp_.comm().size() > 1) decomp_.comm().sum(flat);
+      for (std::size_t k = 0; k < loads_.size(); ++k)
+        for (std::size_t a = 0; a < 3; ++a) {
+          loads_[k].force[a] = flat[6 * k + a];
+          loads_[k].moment[a] = flat[6 * k + 3 + a];
+        }
+      loads_time_ = rates_time_;
+    }
   }
   Stopwatch sw{times_.forces};
   body_forces(P_, F_);
@@ -407,6 +428,7 @@ void Solver<D>::initialize() {
   const Index owned = decomp_.owned();
   std::vector<Real> rho_set;
   if (!continuity_) rho_set.assign(P_.rho.begin(), P_.rho.begin() + owned);
+  rates_time_ = t_;
   compute_rates(0);
   if (!continuity_ && !restored_) {
     const auto& comm = decomp_.comm();
@@ -553,6 +575,7 @@ void Solver<D>::step(Real dt_cap) {
   decomp_.migrate(P_);        // [mpi] to the new owners, re-bisecting when unbalanced
   decomp_.exchange_halo(P_);  // [mpi]
   build_neighbors();
+  rates_time_ = t_ + dt_;
   compute_rates(dt_);
   {
     Stopwatch sw{times_.integrate};

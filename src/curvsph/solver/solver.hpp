@@ -114,6 +114,15 @@ class Solver {
   // those events).
   std::size_t contact_particles() const { return contacted_.size(); }
 
+  // Wall loads (forces.csv, boundary/wall_loads.hpp): the force and moment the fluid exerts
+  // on each wall of walls(), summed over the ranks, computed in the wall pass of every step
+  // whose new positions are at a time >= t (and by initialize() when its time is). Off (the
+  // default) until asked for; collective under MPI, so every rank must ask alike.
+  void want_wall_loads_from(double t) { loads_from_ = t; }
+  const std::vector<WallLoad>& wall_loads() const { return loads_; }
+  // The time of wall_loads() (NaN before any was computed).
+  double wall_loads_time() const { return loads_time_; }
+
   // Bytes held by the particle fields, the fluid cell list and the solver's own per-particle
   // scratch (boundary models not included: they do not expose theirs).
   std::size_t bytes_held() const;
@@ -191,6 +200,11 @@ class Solver {
   std::vector<std::size_t> keep_;  // remove_strays() scratch
   std::vector<Index> close_;       // prepare_boundary() scratch
   std::unordered_set<std::int64_t> contacted_;
+  double loads_from_ = std::numeric_limits<double>::infinity();
+  double rates_time_ = 0;  // the time of the positions compute_rates() works on
+  WallLoadSums<D> load_sums_;
+  std::vector<WallLoad> loads_;
+  double loads_time_ = std::numeric_limits<double>::quiet_NaN();
   static constexpr long kResortEvery = 20;
 };
 

@@ -109,6 +109,13 @@ class GhostBoundary final : public BoundaryModel<D> {
   // Measured on the 3-D dam break with mirror ghosts at 0.55/15 before the free-slip images
   // of the continuity equation (dam_break_3d/findings.md, session 12): the front's corner
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
+  // Wall loads (wall_loads.hpp): the reaction of each ghost's pair term, on the ghost's wall,
+  // at the midpoint of particle and ghost (the pressure term acts along the line through
+  // both, so any point of it gives the same moment; the midpoint of a mirror pair is on the
+  // wall). A corner ghost's reaction is split between the faces it was reflected across, the
+  // component along each face's normal to that face (the faces are mutually perpendicular),
+  // what is left (3-D, along the edge of two faces) to the last one. The wall force's
+  // reaction acts at the foot point.
   void add_accelerations(Particles<D>& P) override {
     if (G_.size() == 0) return;
     const WallForce wf = wall_force_;
@@ -116,7 +123,26 @@ class GhostBoundary final : public BoundaryModel<D> {
     const bool no_tension = no_tension_;
     const bool difference = difference_;
     const Vec<D> grav = F_.gravity;
-    parallel_for(static_cast<Index>(P.size()), [&](Index i) {
+    WallLoadSums<D>* loads = this->loads_;
+    const auto react = [&](Index i, Index g, const Vec<D>& R, const VecD<D>& at) {
+      if (G_.reflections[g] == 1) {
+        loads->add(i, static_cast<std::size_t>(G_.wall[g]), R, at);
+        return;
+      }
+      const auto c = std::lower_bound(
+          G_.corners.begin(), G_.corners.end(), g,
+          [](const typename GhostSet<D>::Corner& a, Index b) { return a.ghost < b; });
+      Vec<D> rest = R;
+      const int nr = G_.reflections[g];
+      for (int r = 0; r < nr; ++r) {
+        const Vec<D> n = c->normal[static_cast<std::size_t>(r)].template cast<Real>();
+        const Vec<D> part = R.dot(n) * n;
+        rest -= part;
+        loads->add(i, static_cast<std::size_t>(c->wall[static_cast<std::size_t>(r)]),
+                   r + 1 < nr ? part : Vec<D>(part + rest), at);
+      }
+    };
+    const auto body = [&](Index i) {
       const Real si = P.sigma[i];
       const Real inv_si2 = 1 / (si * si);
       // boundary.wall_tension: false: the ghost pair terms take p clamped at 0, so the wall
@@ -125,6 +151,7 @@ class GhostBoundary final : public BoundaryModel<D> {
       const Real mu = F_.viscosity[P.phase[i]];
       Vec<D> grad_p = Vec<D>::Zero(), visc = Vec<D>::Zero(), push = Vec<D>::Zero();
       bool any = false;
+      const bool track = loads && i < loads->count();
       cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
         const Index s = G_.source[g];
         const Real f = W_.gradient_factor(std::sqrt(r2));
@@ -133,23 +160,36 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
+        Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
-          grad_p += bg * ((pg - P.p[i]) * inv_sg2) * f * r;
+          gp = bg * ((pg - P.p[i]) * inv_sg2) * f * r;
         } else {
           if (no_tension) pg = std::max(pg, Real(0));
-          grad_p += bg * (pg * inv_sg2 + pi_s2) * f * r;
+          gp = bg * (pg * inv_sg2 + pi_s2) * f * r;
         }
-        visc += bg * (inv_sg2 + inv_si2) * f * (P.v[i] - G_.v[g]);
+        const Vec<D> vs = bg * (inv_sg2 + inv_si2) * f * (P.v[i] - G_.v[g]);
+        grad_p += gp;
+        visc += vs;
         any = true;
+        if (track)
+          react(i, g, Vec<D>(gp - mu * vs), (P.x[i] - Real(0.5) * r).template cast<double>());
         if (s == i && G_.reflections[g] == 1) {
           const Real d = static_cast<Real>(G_.source_depth[g]);
-          if (wf.active(d)) push += wf.magnitude(d) * G_.normal[g].template cast<Real>();
+          if (wf.active(d)) {
+            const Vec<D> pg_push = wf.magnitude(d) * G_.normal[g].template cast<Real>();
+            push += pg_push;
+            if (track) react(i, g, Vec<D>(-P.mass[i] * pg_push), G_.foot[g]);
+          }
         }
       });
       if (!any) return;
       const Real inv_m = 1 / P.mass[i];
       P.a[i] += -inv_m * grad_p + mu * inv_m * visc + push;
-    });
+    };
+    if (loads)
+      WallLoadSums<D>::for_blocks(static_cast<Index>(P.size()), false, body);
+    else
+      parallel_for(static_cast<Index>(P.size()), body);
   }
 
   // The ghosts enter the shift direction as neighbours (beta_g source volumes, as in the

@@ -52,6 +52,7 @@ struct Generator {
   const GhostOptions<D>& opt;
 
   using Record = typename GhostSet<D>::Record;
+  using Corner = typename GhostSet<D>::Corner;
 
   // The velocity images of one reflection: {the mode's, the free-slip one} (the continuity
   // equation's, ghosts.hpp); the free-slip image is the mode's own for free_slip walls.
@@ -82,8 +83,15 @@ struct Generator {
   }
 
   // Reflects (x, u) across the flat faces listed in `set` in turn and emits the result.
-  void emit_corner(std::vector<Record>& out, Index i, const VecD<D>& x0, const VecD<D>& u0,
-                   const FlatFace<D>* const* set, int count) const {
+  void emit_corner(std::vector<Record>& out, std::vector<Corner>& corners, Index i,
+                   const VecD<D>& x0, const VecD<D>& u0, const FlatFace<D>* const* set,
+                   int count) const {
+    Corner c{static_cast<Index>(out.size()), {-1, -1, -1}, {}};
+    for (int r = 0; r < count; ++r) {
+      c.wall[static_cast<std::size_t>(r)] = set[r]->wall;
+      c.normal[static_cast<std::size_t>(r)] = set[r]->normal;
+    }
+    corners.push_back(c);
     VecD<D> x = x0, u = u0, u_slip = u0, foot = x0, n = x0;
     double d = 0;
     for (int r = 0; r < count; ++r) {
@@ -197,7 +205,7 @@ struct Generator {
 
   // Returns {penetrated, no_root}.
   std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
-                                 std::vector<Record>& out) const {
+                                 std::vector<Record>& out, std::vector<Corner>& corners) const {
     std::array<FlatFace<D>, kMaxFlat> flat;
     int nflat = 0;
     bool penetrated = false, no_root = false;
@@ -265,12 +273,12 @@ struct Generator {
         for (int b = a + 1; b < nflat; ++b) {
           if (!perpendicular(a, b)) continue;
           const FlatFace<D>* pair[2] = {&flat[a], &flat[b]};
-          emit_corner(out, i, x, u, pair, 2);
+          emit_corner(out, corners, i, x, u, pair, 2);
           if constexpr (D == 3) {
             for (int c = b + 1; c < nflat; ++c) {
               if (!perpendicular(a, c) || !perpendicular(b, c)) continue;
               const FlatFace<D>* triple[3] = {&flat[a], &flat[b], &flat[c]};
-              emit_corner(out, i, x, u, triple, 3);
+              emit_corner(out, corners, i, x, u, triple, 3);
             }
           }
         }
@@ -296,6 +304,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
   const int max_threads = omp_get_max_threads();
   if (static_cast<int>(thread_ghosts_.size()) < max_threads) {
     thread_ghosts_.resize(max_threads);
+    thread_corners_.resize(max_threads);
     thread_penetrated_.resize(max_threads);
     thread_no_root_.resize(max_threads);
   }
@@ -316,17 +325,20 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     auto buf = std::move(thread_ghosts_[t]);
     auto pen = std::move(thread_penetrated_[t]);
     auto nor = std::move(thread_no_root_[t]);
+    auto cor = std::move(thread_corners_[t]);
+    cor.clear();
     buf.clear();
     pen.clear();
     nor.clear();
     for (Index i = begin; i < end; ++i) {
-      const auto [p, r] = gen.particle(i, x_f[i], v_f[i], buf);
+      const auto [p, r] = gen.particle(i, x_f[i], v_f[i], buf, cor);
       if (p) pen.push_back(i);
       if (r) nor.push_back(i);
     }
     thread_ghosts_[t] = std::move(buf);
     thread_penetrated_[t] = std::move(pen);
     thread_no_root_[t] = std::move(nor);
+    thread_corners_[t] = std::move(cor);
 #pragma omp barrier
 #pragma omp single
     {
@@ -367,7 +379,12 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
   }
   penetrated.clear();
   no_root.clear();
+  corners.clear();
   for (int k = 0; k < used_threads; ++k) {
+    for (Corner c : thread_corners_[k]) {
+      c.ghost += static_cast<Index>(offsets_[k]);
+      corners.push_back(c);
+    }
     penetrated.insert(penetrated.end(), thread_penetrated_[k].begin(), thread_penetrated_[k].end());
     no_root.insert(no_root.end(), thread_no_root_[k].begin(), thread_no_root_[k].end());
   }

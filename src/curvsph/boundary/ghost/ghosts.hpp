@@ -48,6 +48,7 @@
 //    (sigma_g = sigma_s beta, unweighted) is not used: see ghost_boundary.cpp. Ghosts are not
 //    integrated in time; rebuild them after every position update (allocation-free after the first
 //    build: every vector is reused).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -94,6 +95,15 @@ class GhostSet {
   std::vector<VecD<D>> foot;              // foot point on that wall
   std::vector<VecD<D>> normal;            // its normal, into the fluid
   std::vector<std::uint8_t> reflections;  // 1 single; 2, 3 corner ghosts
+  // Corner ghosts (reflections > 1), ascending by ghost index, with the flat faces reflected
+  // across in order (the wall loads split a corner ghost's reaction between them; `wall` and
+  // `normal` above keep the last face only).
+  struct Corner {
+    Index ghost;
+    std::array<std::int32_t, 3> wall;
+    std::array<VecD<D>, 3> normal;
+  };
+  std::vector<Corner> corners;
   // Per build.
   std::vector<Index> penetrated;  // fluid particles with distance <= 0 to some wall
   std::vector<Index> no_root;     // fluid particles within the support without a ghost root
@@ -117,6 +127,7 @@ class GhostSet {
 
  private:
   std::vector<std::vector<Record>> thread_ghosts_;
+  std::vector<std::vector<Corner>> thread_corners_;  // ghost index local to the thread's buffer
   std::vector<std::vector<Index>> thread_penetrated_, thread_no_root_;
   std::vector<std::size_t> offsets_;
   std::vector<const BoxWall<D>*> boxes_;    // per wall: the box when fluid is inside, else null

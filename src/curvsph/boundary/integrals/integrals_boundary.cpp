@@ -141,7 +141,10 @@
 //    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -206,7 +209,7 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
     // A wall drawn past a periodic seam would be counted twice (itself and its image).
     if (c.has_domain && (c.periodic[0] || c.periodic[1] || c.periodic[2]))
       e = clip_to_periodic_domain<D>(e, c.domain_min.head<D>(), c.domain_max.head<D>(), c.periodic);
-    wall_of_.insert(wall_of_.end(), e.size(), static_cast<int>(k));
+    wall_of_.insert(wall_of_.end(), e.size(), static_cast<std::int32_t>(k));
     el_body_.append(e);
     const auto* mw = dynamic_cast<const MovingWall<D>*>(&walls_[k]);
     geometry_moves_ |= mw && mw->geometry_moves();
@@ -446,10 +449,13 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
   });
   const Real dn_min = Real(0.5) * dx_;
   const bool difference = pressure_difference(spec_);  // the fluid sums are consistent already
-  parallel_for_balanced(static_cast<Index>(P.size()), [&](Index i) {
+  WallLoadSums<D>* loads = this->loads_;
+  const auto body = [&](Index i) {
     const Real inv_g = 1 / gamma_[i];
+    const Vec<D> a_before = P.a[i];
     P.a[i] *= inv_g;
     if (!near_[i]) return;
+    const bool track = loads && i < loads->count();
     const Real mu = F_.viscosity[P.phase[i]];
     Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
     for (const Pair& q : pairs_of(i)) {
@@ -483,8 +489,107 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       P.a[i] += blend * inv_g * P.p[i] / P.mass[i] * (c - (2 / si) * wn);
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
-    if (wall_force_.active(wall_dist_[i])) P.a[i] += wall_force_push(walls_, P.x[i], wall_force_);
-  });
+    if (track) add_loads(i, Vec<D>(-P.mass[i] * (P.a[i] - a_before)), P.x[i], *loads);
+    if (!wall_force_.active(wall_dist_[i])) return;
+    if (!track) {
+      P.a[i] += wall_force_push(walls_, P.x[i], wall_force_);
+      return;
+    }
+    Vec<D> push = Vec<D>::Zero();
+    wall_force_each(walls_, P.x[i], wall_force_,
+                    [&](std::size_t k, const Vec<D>& p, const VecD<D>& foot) {
+                      push += p;
+                      loads->add(i, k, Vec<D>(-P.mass[i] * p), foot);
+                    });
+    P.a[i] += push;
+  };
+  if (loads)
+    WallLoadSums<D>::for_blocks(static_cast<Index>(P.size()), true, body);
+  else
+    parallel_for_balanced(static_cast<Index>(P.size()), body);
+}
+
+// Wall loads (wall_loads.hpp). The reaction R = -m_i da_i of everything the wall terms did to
+// particle i (the renormalisation by gamma_i included: without it the walls of a tank at rest
+// would not carry the fluid's weight) goes to the walls of the particle's elements: all of it
+// to the one wall when one wall is in reach (the usual case); otherwise the component of R in
+// the span of the walls' mean normals N_k = sum_{b in k} W_ib A_b n_b to each wall along its
+// own (a tank's corner particle pushes the floor down and the side wall sideways), and what
+// is left, or all of R when those normals are not independent (a particle between two walls
+// facing each other), in proportion to the walls' weights sum_{b in k} W_ib A_b. Each wall's
+// share acts at the W_ib A_b-weighted centre of its elements. (Only particles with elements
+// in reach: a Shepard factor below 1 away from walls, volume mode at a free surface, is not a
+// wall's doing.)
+template <int D>
+void IntegralsBoundary<D>::add_loads(Index i, const Vec<D>& R, const Vec<D>& xi,
+                                     WallLoadSums<D>& loads) const {
+  constexpr int kMax = 8;
+  std::array<std::int32_t, kMax> wall{};
+  std::array<double, kMax> weight{};
+  std::array<VecD<D>, kMax> normal{}, centre{};
+  int m = 0;
+  double total = 0;
+  for (const Pair& q : pairs_of(i)) {
+    const std::int32_t k = wall_of_[static_cast<std::size_t>(q.b)];
+    int s = 0;
+    while (s < m && wall[static_cast<std::size_t>(s)] != k) ++s;
+    if (s == m) {
+      if (m == kMax) continue;  // more walls in reach than kept: their share goes to the rest
+      wall[static_cast<std::size_t>(m)] = k;
+      weight[static_cast<std::size_t>(m)] = 0;
+      normal[static_cast<std::size_t>(m)] = VecD<D>::Zero();
+      centre[static_cast<std::size_t>(m)] = VecD<D>::Zero();
+      ++m;
+    }
+    const auto u = static_cast<std::size_t>(s);
+    const double w = static_cast<double>(q.w * ea_[q.b]);
+    weight[u] += w;
+    normal[u] += w * en_[q.b].template cast<double>();
+    centre[u] += w * (xi - q.r).template cast<double>();  // the element's image seen from i
+    total += w;
+  }
+  if (m == 0 || !(total > 0)) return;
+  for (int s = 0; s < m; ++s)
+    centre[static_cast<std::size_t>(s)] /= weight[static_cast<std::size_t>(s)];
+  if (m == 1) {
+    loads.add(i, static_cast<std::size_t>(wall[0]), R, centre[0]);
+    return;
+  }
+  const VecD<D> r = R.template cast<double>();
+  VecD<D> rest = r;
+  if (m <= D) {
+    Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Identity();
+    Eigen::Matrix<double, D, 1> rhs = Eigen::Matrix<double, D, 1>::Zero();
+    std::array<VecD<D>, kMax> unit{};
+    bool ok = true;
+    for (int s = 0; s < m && ok; ++s) {
+      const double len = normal[static_cast<std::size_t>(s)].norm();
+      ok = len > 1e-12 * weight[static_cast<std::size_t>(s)];
+      if (ok) unit[static_cast<std::size_t>(s)] = normal[static_cast<std::size_t>(s)] / len;
+    }
+    if (ok) {
+      for (int a = 0; a < m; ++a) {
+        rhs[a] = unit[static_cast<std::size_t>(a)].dot(r);
+        for (int b = 0; b < m; ++b)
+          G(a, b) = unit[static_cast<std::size_t>(a)].dot(unit[static_cast<std::size_t>(b)]);
+      }
+      // Independent normals: G (the Gram matrix, identity outside the m x m block) is well
+      // conditioned; two walls facing each other make it singular.
+      if (std::abs(G.determinant()) > 1e-6) {
+        const Eigen::Matrix<double, D, 1> c = G.ldlt().solve(rhs);
+        for (int s = 0; s < m; ++s) {
+          const VecD<D> part = c[s] * unit[static_cast<std::size_t>(s)];
+          rest -= part;
+          loads.add(i, static_cast<std::size_t>(wall[static_cast<std::size_t>(s)]),
+                    part.template cast<Real>(), centre[static_cast<std::size_t>(s)]);
+        }
+      }
+    }
+  }
+  for (int s = 0; s < m; ++s)
+    loads.add(i, static_cast<std::size_t>(wall[static_cast<std::size_t>(s)]),
+              (rest * (weight[static_cast<std::size_t>(s)] / total)).template cast<Real>(),
+              centre[static_cast<std::size_t>(s)]);
 }
 
 // Shifting: the shift direction takes the residual of the constant-field identity of item 1,

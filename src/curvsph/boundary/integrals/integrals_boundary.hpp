@@ -8,6 +8,7 @@
 // than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
 // symmetric | tensile_control` chooses the near-wall pressure gradient (items 2b and 2d of the
 // .cpp; symmetric by default).
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -57,6 +58,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   // Places the body-frame elements of moving walls at the walls' current time (and refreshes
   // centres, normals, velocities, the element cell list and the element quadratures).
   void place_elements();
+  // Adds the reaction R of particle i's wall terms to the wall loads (the .cpp says how it
+  // is shared between walls).
+  void add_loads(Index i, const Vec<D>& R, const Vec<D>& xi, WallLoadSums<D>& loads) const;
   // The pair list of prepare() must belong to the particles passed to the wall passes.
   void check_prepared(const Particles<D>& P) const;
   // Calls f(b, r_ib = x_i - x_b (periodic image applied), r2) for the elements whose
@@ -84,7 +88,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
 
   BoundaryElements<D> el_;       // in the world, at the walls' current time
   BoundaryElements<D> el_body_;  // as generated, in each wall's body frame
-  std::vector<int> wall_of_;     // the wall of every element
+  std::vector<std::int32_t> wall_of_;  // the wall of every element
   bool geometry_moves_ = false;  // some wall's geometry moves: elements re-placed every prepare
   std::vector<Vec<D>> ex_, en_, eu_;  // element centre, normal (into the fluid), velocity
   std::vector<Real> ea_;              // element area (length in 2-D)

@@ -88,10 +88,6 @@ class Wall {
   // |d(x) - d(y)| <= |x - y| and an answer at y bounds the answer at x (the fill skips queries
   // with it). False for open walls, whose sign flips beyond their edges.
   virtual bool closed_surface() const { return false; }
-  // True when the wall's geometry changes with time (a wall that moves, rather than one whose
-  // surface slides or spins in place: WallMotion alone only sets the surface velocity). The
-  // walls output then writes the tessellation at every snapshot instead of once.
-  virtual bool moves() const { return false; }
 
   // Moving walls (geometry/moving_wall.hpp). A static wall answers: never moves, velocity 0,
   // and is its own body; set_time does nothing. The solver calls WallSet::set_time at every

@@ -5,6 +5,8 @@
 
 namespace curvsph {
 
-inline bool pressure_difference(const Case& c) { return c.pressure_difference; }
+inline bool pressure_difference(const Case& c) {
+  return c.pressure_difference;
+}
 
 }  // namespace curvsph

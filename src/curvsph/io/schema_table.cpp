@@ -172,7 +172,7 @@ const Row kRows[] = {
 {"open_boundaries.*.kind", "choice: inflow | outflow", "", "required", "-", "inflow (velocity prescribed) or outflow (pressure prescribed)"},
 {"open_boundaries.*.point", "vector", "", "required", "m", "a point of the boundary (inside the domain box)"},
 {"open_boundaries.*.normal", "vector", "", "required", "-", "the boundary's normal, pointing into the fluid (non-zero; normalised)"},
-{"open_boundaries.*.velocity", "vector | map", "", "required for inflow", "m/s", "inflow velocity [u, v(, w)] or {parabolic: {...}, ramp}"},
+{"open_boundaries.*.velocity", "vector", "", "required for inflow", "m/s", "inflow velocity [u, v(, w)], or a map {parabolic: {...}, ramp}"},
 {"open_boundaries.*.velocity.ramp", "number", "[0, inf)", "0", "s", "time over which the inflow rises linearly from 0"},
 {"open_boundaries.*.velocity.parabolic", "map", "", "optional", "-", "parabolic profile over a segment / rectangle (from, to) or a circle (center, radius)"},
 {"open_boundaries.*.velocity.parabolic.max", "number", "(0, inf)", "required", "m/s", "peak velocity of the profile"},

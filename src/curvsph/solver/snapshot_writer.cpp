@@ -144,17 +144,20 @@ void SnapshotWriter<D>::write_walls(const Solver<D>& solver, const std::string& 
     const VecD<D> grow = VecD<D>::Constant(4 * h_) + 0.5 * (b - a);
     clip = Eigen::AlignedBox<double, D>(a - grow, b + grow);
   }
-  if (!comm_.root()) return;
+  // Every rank records the file names: the early return above must be taken by all ranks
+  // alike, as the clip box's reduction is collective.
   wall_files_.assign(groups.names.size(), "");
+  for (std::size_t g = 0; g < groups.names.size(); ++g)
+    wall_files_[g] = !moves         ? fmt::format("walls_{}.vtp", g)
+                     : name.empty() ? fmt::format("walls_{}_{:06d}.vtp", g, index)
+                                    : fmt::format("walls_{}_{}", g, name);
+  if (!comm_.root()) return;
   for (std::size_t g = 0; g < groups.names.size(); ++g) {
     std::vector<const Wall<D>*> members;
     for (std::size_t k = 0; k < walls.size(); ++k)
       if (groups.group[k] == g) members.push_back(&walls[k]);
-    const std::string file = !moves         ? fmt::format("walls_{}.vtp", g)
-                             : name.empty() ? fmt::format("walls_{}_{:06d}.vtp", g, index)
-                                            : fmt::format("walls_{}_{}", g, name);
+    const std::string& file = wall_files_[g];
     wall_polydata(tessellate_walls<D>(members, dx_, clip)).write(out_dir_ / file, options_);
-    wall_files_[g] = file;
     series_.add(solver.time(), file, static_cast<int>(2 + g), groups.names[g]);
   }
 }

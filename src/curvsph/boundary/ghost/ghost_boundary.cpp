@@ -125,13 +125,18 @@ class GhostBoundary final : public BoundaryModel<D> {
     const Vec<D> grav = F_.gravity;
     WallLoadSums<D>* loads = this->loads_;
     const auto react = [&](Index i, Index g, const Vec<D>& R, const VecD<D>& at) {
-      if (G_.reflections[g] == 1) {
+      // Images reflected more than once within one wall (a polygon's or a CAD solid's
+      // corners, facet_images.hpp) have no corner record: the whole reaction is that wall's.
+      const auto c = G_.reflections[g] == 1
+                         ? G_.corners.end()
+                         : std::lower_bound(G_.corners.begin(), G_.corners.end(), g,
+                                            [](const typename GhostSet<D>::Corner& a, Index b) {
+                                              return a.ghost < b;
+                                            });
+      if (c == G_.corners.end() || c->ghost != g) {
         loads->add(i, static_cast<std::size_t>(G_.wall[g]), R, at);
         return;
       }
-      const auto c = std::lower_bound(
-          G_.corners.begin(), G_.corners.end(), g,
-          [](const typename GhostSet<D>::Corner& a, Index b) { return a.ghost < b; });
       Vec<D> rest = R;
       const int nr = G_.reflections[g];
       for (int r = 0; r < nr; ++r) {

@@ -86,8 +86,8 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   Real dx_ = 0;
   bool built_ = false;
 
-  BoundaryElements<D> el_;       // in the world, at the walls' current time
-  BoundaryElements<D> el_body_;  // as generated, in each wall's body frame
+  BoundaryElements<D> el_;             // in the world, at the walls' current time
+  BoundaryElements<D> el_body_;        // as generated, in each wall's body frame
   std::vector<std::int32_t> wall_of_;  // the wall of every element
   bool geometry_moves_ = false;  // some wall's geometry moves: elements re-placed every prepare
   std::vector<Vec<D>> ex_, en_, eu_;  // element centre, normal (into the fluid), velocity

@@ -18,7 +18,6 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/io/case_overrides.hpp"
-#include "curvsph/io/pressure_form.hpp"
 #include "curvsph_build_paths.hpp"
 
 namespace curvsph {
@@ -168,14 +167,14 @@ TEST(CaseFile, WrongChoice) {
 // pressure_gradient (physics/pressure_gradient.hpp): symmetric unless set, confined or not
 // (the difference form alone clumps the particles: throttled_pipe/findings.md).
 TEST(CaseFile, PressureGradientKey) {
-  EXPECT_FALSE(pressure_difference(read_case(valid(), "dir/case.yaml")));
+  EXPECT_FALSE(read_case(valid(), "dir/case.yaml").pressure_difference);
   YAML::Node g = valid();
   g["domain"]["periodic"] = YAML::Load("[true, false]");
   g["gravity"] = YAML::Load("[0, -9.81]");
-  EXPECT_FALSE(pressure_difference(read_case(g, "dir/case.yaml")));
+  EXPECT_FALSE(read_case(g, "dir/case.yaml").pressure_difference);
   YAML::Node d = valid();
   d["pressure_gradient"] = "difference";
-  EXPECT_TRUE(pressure_difference(read_case(d, "dir/case.yaml")));
+  EXPECT_TRUE(read_case(d, "dir/case.yaml").pressure_difference);
   expect_error([](YAML::Node& r) { r["pressure_gradient"] = "consistent"; }, "pressure_gradient",
                "symmetric | difference");
 }

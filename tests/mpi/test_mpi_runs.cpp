@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "curvsph/io/vtk_reader.hpp"
-#include "support/command_fixture.hpp"
 #include "curvsph_build_paths.hpp"
+#include "support/command_fixture.hpp"
 
 namespace curvsph {
 namespace {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
 #include "curvsph_build_paths.hpp"
 
 namespace curvsph::testing {

@@ -13,7 +13,6 @@
 #include "curvsph/core/stage_report.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
-#include "curvsph/io/pressure_form.hpp"
 #include "curvsph/parallel/agree.hpp"
 #include "curvsph/physics/artificial_viscosity.hpp"
 #include "curvsph/physics/density.hpp"
@@ -228,7 +227,7 @@ void Solver<D>::compute_rates(Real dt_rho) {
   }
   {
     Stopwatch sw{times_.forces};
-    fluid_forces(P_, cells_, W_, F_, pair_, rule, pressure_difference(case_));
+    fluid_forces(P_, cells_, W_, F_, pair_, rule, case_.pressure_difference);
     if (tv_.enabled()) {
       tv_.du.resize(P_.size(), Vec<D>::Zero());
       decomp_.update_halo(tv_.du);  // [mpi] the pair pass reads du[j]

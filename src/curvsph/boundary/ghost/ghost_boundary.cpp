@@ -6,7 +6,6 @@
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/boundary/wall_force.hpp"
 #include "curvsph/core/parallel.hpp"
-#include "curvsph/io/pressure_form.hpp"
 
 namespace curvsph {
 namespace {
@@ -25,7 +24,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
-    difference_ = pressure_difference(c);
+    difference_ = c.pressure_difference;
     Vec3d lo = c.domain_min, hi = c.domain_max;
     cells_.configure(W_.support, lo, hi, c.periodic);
   }

@@ -156,7 +156,6 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/geometry/moving_wall.hpp"
-#include "curvsph/io/pressure_form.hpp"
 
 namespace curvsph {
 
@@ -448,7 +447,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     p_wall_[b] = den > 0 ? num / den : 0;
   });
   const Real dn_min = Real(0.5) * dx_;
-  const bool difference = pressure_difference(spec_);  // the fluid sums are consistent already
+  const bool difference = spec_.pressure_difference;  // the fluid sums are consistent already
   WallLoadSums<D>* loads = this->loads_;
   const auto body = [&](Index i) {
     const Real inv_g = 1 / gamma_[i];

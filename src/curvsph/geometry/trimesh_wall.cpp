@@ -66,6 +66,76 @@ TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int
     }
   curv_ = mesh_curvature(v_, tris_, face_n_, edges, kFeatureAngle);
   bvh_.build(boxes, 4);
+  // Smooth faces: flood fill across the edges that are not creases (the curvature's test).
+  const double smooth = std::cos(kFeatureAngle);
+  face_of_.assign(tris_.size(), -1);
+  std::vector<int> stack;
+  for (std::size_t t0 = 0; t0 < tris_.size(); ++t0) {
+    if (face_of_[t0] >= 0) continue;
+    const int id = faces_++;
+    bool planar = true;
+    face_of_[t0] = id;
+    stack.assign(1, static_cast<int>(t0));
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      // Coplanar: the same normal and every vertex on the first triangle's plane.
+      for (int i = 0; i < 3; ++i)
+        planar = planar && face_n_[t].dot(face_n_[t0]) > 1 - 1e-12 &&
+                 std::abs(face_n_[t0].dot(v_[tris_[t][i]] - v_[tris_[t0][0]])) <=
+                     1e-12 * (1 + v_[tris_[t][i]].norm());
+      for (int i = 0; i < 3; ++i) {
+        const int u = edges.across[t][i];
+        if (u < 0 || face_of_[u] >= 0 || !(face_n_[t].dot(face_n_[u]) >= smooth)) continue;
+        face_of_[u] = id;
+        stack.push_back(u);
+      }
+    }
+    planar_.push_back(planar ? 1 : 0);
+  }
+}
+
+int TriMeshWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* out, int max) const {
+  if (faces_ < 2 || max <= 0) return 0;
+  // The nearest triangle of each face within reach (a point is near few faces: a short list).
+  struct Best {
+    int face, t, f;
+    double d;
+    Vec3d foot;
+  };
+  std::vector<Best> best;
+  bvh_.visit(
+      x, [&] { return reach; },
+      [&](int t) {
+        const auto& T = tris_[t];
+        int f;
+        const Vec3d q = closest_on_triangle(x, v_[T[0]], v_[T[1]], v_[T[2]], f);
+        const double d = (q - x).norm();
+        if (!(d < reach)) return;
+        const int id = face_of_[static_cast<std::size_t>(t)];
+        auto it =
+            std::find_if(best.begin(), best.end(), [&](const Best& b) { return b.face == id; });
+        if (it == best.end())
+          best.push_back({id, t, f, d, q});
+        else if (d < it->d)
+          *it = {id, t, f, d, q};
+      });
+  std::sort(best.begin(), best.end(), [](const Best& a, const Best& b) { return a.d < b.d; });
+  int n = 0;
+  for (const Best& b : best) {
+    if (n == max) break;
+    WallPoint<3> w = answer(x, b.t, b.f, b.foot, b.d);
+    if (planar_[static_cast<std::size_t>(b.face)]) {
+      // The face's own plane: its normal wherever the foot is (a pseudo-normal on the face's
+      // rim would lean towards the neighbouring face), and no curvature.
+      w.normal = sign_ * face_n_[static_cast<std::size_t>(b.t)];
+      w.distance = (x - b.foot).dot(w.normal);
+      if (std::abs(w.distance) < b.d) w.distance = std::copysign(b.d, w.distance);
+      w.k1 = w.k2 = 0;
+    }
+    out[n++] = w;
+  }
+  return n;
 }
 
 WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
@@ -81,8 +151,13 @@ WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
         const double d = (q - x).norm();
         if (d < best) best = d, best_t = t, best_f = f, foot = q;
       });
+  if (best_t < 0) return WallPoint<3>{};
+  return answer(x, best_t, best_f, foot, best);
+}
+
+WallPoint<3> TriMeshWall::answer(const Vec3d& x, int best_t, int best_f, const Vec3d& foot,
+                                 double best) const {
   WallPoint<3> w;
-  if (best_t < 0) return w;
   const auto& T = tris_[best_t];
   Vec3d pseudo = best_f == 6  ? face_n_[best_t]
                  : best_f < 3 ? vert_n_[T[best_f]]

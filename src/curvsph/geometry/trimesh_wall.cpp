@@ -103,7 +103,8 @@ int TriMeshWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* ou
     double d;
     Vec3d foot;
   };
-  std::vector<Best> best;
+  thread_local std::vector<Best> best;  // capacity kept: this runs for every particle and step
+  best.clear();
   bvh_.visit(
       x, [&] { return reach; },
       [&](int t) {

@@ -65,6 +65,29 @@ TEST(TriMeshFaces, CubeIsSixFlatFacesEachAnsweringAlone) {
   }
 }
 
+TEST(TriMeshFaces, Float32CubeFacesAreStillPlanar) {
+  // A binary STL stores float32 vertices: a cube off the origin, 8 x 8 quads a side, its
+  // vertices rounded to float (relative error 6e-8): still 6 planar faces (curvature 0, one
+  // normal each), which the ghosts' perpendicular-edge images need.
+  const double h = 0.0833333;
+  const Vec3d o(0.1234567, 0.7654321, 0.3141593);
+  auto m = testing::cube_mesh(h, 8);
+  for (Vec3d& p : m.v) p = (p + o).cast<float>().cast<double>();
+  const TriMeshWall wall(m.v, m.t, TriMeshWall::Side::inside);
+  EXPECT_EQ(wall.face_count(), 6);
+  std::array<WallPoint<3>, 8> fp;
+  const Vec3d x = o + Vec3d(0.9, -0.8, 0.85) * h;  // near the corner (+h, -h, +h)
+  const int n = wall.face_points_near(x, 0.3 * h, fp.data(), 8);
+  ASSERT_EQ(n, 3);
+  for (int k = 0; k < n; ++k) {
+    const WallPoint<3>& p = fp[static_cast<std::size_t>(k)];
+    EXPECT_EQ(p.k1, 0.0);
+    EXPECT_EQ(p.k2, 0.0);
+    EXPECT_NEAR(p.normal.cwiseAbs().maxCoeff(), 1.0, 1e-6);                     // an axis
+    EXPECT_LT((x - p.foot - p.distance * p.normal).norm(), 1e-6 * p.distance);  // projects
+  }
+}
+
 TEST(TriMeshFaces, SmoothMeshIsOneFaceAndLeavesClosestToAnswer) {
   // A sphere at 10-degree facets (edges turn by 10 degrees < the 30-degree feature angle).
   const auto m = testing::uv_sphere(0.3, 10.0);

@@ -67,23 +67,28 @@ TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int
   curv_ = mesh_curvature(v_, tris_, face_n_, edges, kFeatureAngle);
   bvh_.build(boxes, 4);
   // Smooth faces: flood fill across the edges that are not creases (the curvature's test).
+  // Coplanar (a planar face): every triangle's normal within 1e-4 rad of the face's mean and
+  // every vertex within 1e-6 of the mesh's size of its plane, tolerances that a binary STL's
+  // float32 vertices pass (their relative error is 6e-8).
+  Aabb<3> all;
+  for (const Vec3d& p : v_) all.extend(p);
+  const double plane_tol = 1e-6 * all.diagonal(), cos_tol = std::cos(1e-4);
   const double smooth = std::cos(kFeatureAngle);
   face_of_.assign(tris_.size(), -1);
-  std::vector<int> stack;
+  std::vector<int> stack, members;
   for (std::size_t t0 = 0; t0 < tris_.size(); ++t0) {
     if (face_of_[t0] >= 0) continue;
     const int id = faces_++;
-    bool planar = true;
     face_of_[t0] = id;
     stack.assign(1, static_cast<int>(t0));
+    members.clear();
+    Vec3d sum = Vec3d::Zero();  // area-weighted normal
     while (!stack.empty()) {
       const int t = stack.back();
       stack.pop_back();
-      // Coplanar: the same normal and every vertex on the first triangle's plane.
-      for (int i = 0; i < 3; ++i)
-        planar = planar && face_n_[t].dot(face_n_[t0]) > 1 - 1e-12 &&
-                 std::abs(face_n_[t0].dot(v_[tris_[t][i]] - v_[tris_[t0][0]])) <=
-                     1e-12 * (1 + v_[tris_[t][i]].norm());
+      members.push_back(t);
+      const auto& T = tris_[static_cast<std::size_t>(t)];
+      sum += (v_[T[1]] - v_[T[0]]).cross(v_[T[2]] - v_[T[0]]);
       for (int i = 0; i < 3; ++i) {
         const int u = edges.across[t][i];
         if (u < 0 || face_of_[u] >= 0 || !(face_n_[t].dot(face_n_[u]) >= smooth)) continue;
@@ -91,7 +96,13 @@ TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int
         stack.push_back(u);
       }
     }
-    planar_.push_back(planar ? 1 : 0);
+    const Vec3d n = sum.normalized();
+    bool planar = sum.norm() > 0;
+    const Vec3d o = v_[tris_[t0][0]];
+    for (const int t : members)
+      for (int i = 0; i < 3 && planar; ++i)
+        planar = face_n_[t].dot(n) >= cos_tol && std::abs(n.dot(v_[tris_[t][i]] - o)) <= plane_tol;
+    face_normal_.push_back(planar ? n : Vec3d::Zero());
   }
 }
 
@@ -126,12 +137,12 @@ int TriMeshWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* ou
   for (const Best& b : best) {
     if (n == max) break;
     WallPoint<3> w = answer(x, b.t, b.f, b.foot, b.d);
-    if (planar_[static_cast<std::size_t>(b.face)]) {
-      // The face's own plane: its normal wherever the foot is (a pseudo-normal on the face's
-      // rim would lean towards the neighbouring face), and no curvature.
-      w.normal = sign_ * face_n_[static_cast<std::size_t>(b.t)];
-      w.distance = (x - b.foot).dot(w.normal);
-      if (std::abs(w.distance) < b.d) w.distance = std::copysign(b.d, w.distance);
+    const Vec3d& plane = face_normal_[static_cast<std::size_t>(b.face)];
+    if (plane.squaredNorm() > 0) {
+      // A planar face: one normal wherever the foot is (a pseudo-normal on the face's rim
+      // would lean towards the neighbouring face), and no curvature.
+      w.normal = sign_ * plane;
+      w.distance = std::copysign(b.d, (x - b.foot).dot(w.normal));
       w.k1 = w.k2 = 0;
     }
     out[n++] = w;

@@ -57,8 +57,8 @@ class TriMeshWall : public Wall<3>, public MultiFace<3> {
   MeshCurvature curv_;
   Bvh<3> bvh_;
   double sign_;
-  std::vector<int> face_of_;           // smooth face of every triangle
-  std::vector<unsigned char> planar_;  // per smooth face: all its triangles coplanar
+  std::vector<int> face_of_;        // smooth face of every triangle
+  std::vector<Vec3d> face_normal_;  // per smooth face: its normal if planar, else zero
   int faces_ = 0;
   // The WallPoint of foot `foot` on triangle t (feature f of closest_on_triangle, distance d).
   WallPoint<3> answer(const Vec3d& x, int t, int f, const Vec3d& foot, double d) const;

@@ -66,6 +66,88 @@ TriMeshWall::TriMeshWall(std::vector<Vec3d> vertices, std::vector<std::array<int
     }
   curv_ = mesh_curvature(v_, tris_, face_n_, edges, kFeatureAngle);
   bvh_.build(boxes, 4);
+  // Smooth faces: flood fill across the edges that are not creases (the curvature's test).
+  // Coplanar (a planar face): every triangle's normal within 1e-4 rad of the face's mean and
+  // every vertex within 1e-6 of the mesh's size of its plane, tolerances that a binary STL's
+  // float32 vertices pass (their relative error is 6e-8).
+  Aabb<3> all;
+  for (const Vec3d& p : v_) all.extend(p);
+  const double plane_tol = 1e-6 * all.diagonal(), cos_tol = std::cos(1e-4);
+  const double smooth = std::cos(kFeatureAngle);
+  face_of_.assign(tris_.size(), -1);
+  std::vector<int> stack, members;
+  for (std::size_t t0 = 0; t0 < tris_.size(); ++t0) {
+    if (face_of_[t0] >= 0) continue;
+    const int id = faces_++;
+    face_of_[t0] = id;
+    stack.assign(1, static_cast<int>(t0));
+    members.clear();
+    Vec3d sum = Vec3d::Zero();  // area-weighted normal
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      members.push_back(t);
+      const auto& T = tris_[static_cast<std::size_t>(t)];
+      sum += (v_[T[1]] - v_[T[0]]).cross(v_[T[2]] - v_[T[0]]);
+      for (int i = 0; i < 3; ++i) {
+        const int u = edges.across[t][i];
+        if (u < 0 || face_of_[u] >= 0 || !(face_n_[t].dot(face_n_[u]) >= smooth)) continue;
+        face_of_[u] = id;
+        stack.push_back(u);
+      }
+    }
+    const Vec3d n = sum.normalized();
+    bool planar = sum.norm() > 0;
+    const Vec3d o = v_[tris_[t0][0]];
+    for (const int t : members)
+      for (int i = 0; i < 3 && planar; ++i)
+        planar = face_n_[t].dot(n) >= cos_tol && std::abs(n.dot(v_[tris_[t][i]] - o)) <= plane_tol;
+    face_normal_.push_back(planar ? n : Vec3d::Zero());
+  }
+}
+
+int TriMeshWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* out, int max) const {
+  if (faces_ < 2 || max <= 0) return 0;
+  // The nearest triangle of each face within reach (a point is near few faces: a short list).
+  struct Best {
+    int face, t, f;
+    double d;
+    Vec3d foot;
+  };
+  thread_local std::vector<Best> best;  // capacity kept: this runs for every particle and step
+  best.clear();
+  bvh_.visit(
+      x, [&] { return reach; },
+      [&](int t) {
+        const auto& T = tris_[t];
+        int f;
+        const Vec3d q = closest_on_triangle(x, v_[T[0]], v_[T[1]], v_[T[2]], f);
+        const double d = (q - x).norm();
+        if (!(d < reach)) return;
+        const int id = face_of_[static_cast<std::size_t>(t)];
+        auto it =
+            std::find_if(best.begin(), best.end(), [&](const Best& b) { return b.face == id; });
+        if (it == best.end())
+          best.push_back({id, t, f, d, q});
+        else if (d < it->d)
+          *it = {id, t, f, d, q};
+      });
+  std::sort(best.begin(), best.end(), [](const Best& a, const Best& b) { return a.d < b.d; });
+  int n = 0;
+  for (const Best& b : best) {
+    if (n == max) break;
+    WallPoint<3> w = answer(x, b.t, b.f, b.foot, b.d);
+    const Vec3d& plane = face_normal_[static_cast<std::size_t>(b.face)];
+    if (plane.squaredNorm() > 0) {
+      // A planar face: one normal wherever the foot is (a pseudo-normal on the face's rim
+      // would lean towards the neighbouring face), and no curvature.
+      w.normal = sign_ * plane;
+      w.distance = std::copysign(b.d, (x - b.foot).dot(w.normal));
+      w.k1 = w.k2 = 0;
+    }
+    out[n++] = w;
+  }
+  return n;
 }
 
 WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
@@ -81,8 +163,13 @@ WallPoint<3> TriMeshWall::closest(const Vec3d& x, const ParamSeed&) const {
         const double d = (q - x).norm();
         if (d < best) best = d, best_t = t, best_f = f, foot = q;
       });
+  if (best_t < 0) return WallPoint<3>{};
+  return answer(x, best_t, best_f, foot, best);
+}
+
+WallPoint<3> TriMeshWall::answer(const Vec3d& x, int best_t, int best_f, const Vec3d& foot,
+                                 double best) const {
   WallPoint<3> w;
-  if (best_t < 0) return w;
   const auto& T = tris_[best_t];
   Vec3d pseudo = best_f == 6  ? face_n_[best_t]
                  : best_f < 3 ? vert_n_[T[best_f]]

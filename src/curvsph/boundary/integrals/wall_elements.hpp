@@ -40,8 +40,10 @@
 //                clear of the trim loops kept whole (curved quads) or dropped, cells a loop
 //                touches clipped to the face (the loop, sampled at dx / 4 along its edges,
 //                clipped to the cell) and fanned into triangles about the clipped polygon's
-//                centroid, area = int |S_u x S_v| over each (collapsed Gauss-Legendre 8 x 8).
-//                Faces sharing an edge share its samples (edge parameter): they meet vertex
+//                centroid, area = int |S_u x S_v| over each (collapsed Gauss-Legendre 8 x 8);
+//                a cell that the face covers whole and on which the surface is flat and
+//                affine (a plane face's border cells: the loop runs along its sides) stays
+//                one patch, so a CAD box has the `box` wall's elements. Faces sharing an edge share its samples (edge parameter): they meet vertex
 //                to vertex. A cell that a hole's loop crosses, or whose part is not
 //                star-shaped: the loop's chain closed along the cell's side, ear-clipped. A
 //                cell crossed by several loops or twice is split in four, three times, then

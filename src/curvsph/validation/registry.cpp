@@ -20,6 +20,7 @@ StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_
 StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surface_study.cpp
 StudyResult run_moving_cylinder_study(const StudyContext& ctx);   // moving_cylinder_study.cpp
 StudyResult run_cad_at_rest_study(const StudyContext& ctx);       // cad_at_rest_study.cpp
+StudyResult run_cylinder_benchmark_study(const StudyContext& ctx);  // cylinder_benchmark_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -64,6 +65,9 @@ const std::vector<Study>& validation_studies() {
       {"moving_cylinder",
        "Walls that move: towed vs still cylinder (Galilean), oscillating cylinder (Dütsch 1998)",
        &run_moving_cylinder_study},
+      {"cylinder_benchmark",
+       "Schäfer & Turek (1996) cylinder in a channel, Re = 20: C_D, C_L, dp vs D/dx (issue 33)",
+       &run_cylinder_benchmark_study},
   };
   return studies;
 }

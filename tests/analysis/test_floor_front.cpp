@@ -31,7 +31,7 @@ struct Set {
 };
 
 // Brute force: the indicator interpolant summed over all particles and their explicit images in
-// the floor, sampled every dx/4 from x_start; the first crossing below 1/2 after a wet sample.
+// the floor, sampled every dx/4 from x_start; the last crossing below 1/2 after a wet sample.
 double brute_wet_x(const Set& s, double x_start) {
   std::vector<Vec<2>> all = s.x;
   std::vector<Real> V = s.V;
@@ -50,15 +50,13 @@ double brute_wet_x(const Set& s, double x_start) {
       sum += V[i] * W(std::hypot(all[i].x() - xs, all[i].y() - (kFloor + kDx / 2)));
     return sum;
   };
-  bool wet = false;
-  double prev = 0;
-  for (int n = 0; n < 100000; ++n) {
+  double prev = 0, front = std::numeric_limits<double>::quiet_NaN();
+  for (int n = 0; n < 2000; ++n) {  // to x_start + 5 m, far past every particle here
     const double xs = x_start + n * kDx / 4, p = phi(xs);
-    if (wet && p < 0.5) return xs - kDx / 4 + (0.5 - prev) / (p - prev) * kDx / 4;
-    wet = wet || p >= 0.5;
+    if (prev >= 0.5 && p < 0.5) front = xs - kDx / 4 + (0.5 - prev) / (p - prev) * kDx / 4;
     prev = p;
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return front;
 }
 
 TEST(FloorFront, AgainstBruteForceWithFilmSprayAndDroplet) {
@@ -85,10 +83,14 @@ TEST(FloorFront, HalfSpaceEdgeIsTheFront) {
   const FloorFront f = floor_front(s.x, s.V, kFloor, 0.1, kDx, kH);
   EXPECT_NEAR(f.wet_x, 0.6, 0.02 * kDx);
   EXPECT_NEAR(f.largest_x, 0.595, 1e-6);
-  // A start inside a dry stretch (the column has left the wall): skipped to the first wet sample.
+  // A start inside a dry stretch (the column has left the wall), and a dry patch 10 dx long
+  // behind the front: the front is the far edge, 1.0.
   Set t;
   t.block(0.305, 30, 30);
-  EXPECT_NEAR(floor_front(t.x, t.V, kFloor, 0.0, kDx, kH).wet_x, 0.6, 0.02 * kDx);
+  t.block(0.705, 30, 3);
+  const FloorFront ft = floor_front(t.x, t.V, kFloor, 0.0, kDx, kH);
+  EXPECT_NEAR(ft.wet_x, 1.0, 0.02 * kDx);
+  EXPECT_NEAR(ft.wet_x, brute_wet_x(t, 0.0), 1e-9);
   // Nothing wet: NaN.
   Set u;
   u.add(0.3, kFloor + kDx / 2);

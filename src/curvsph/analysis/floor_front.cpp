@@ -47,6 +47,8 @@ FloorFront floor_front(std::span<const Vec<2>> x, std::span<const Real> volume, 
     }
     return s;
   };
+  // The last wet-to-dry crossing: a dry patch behind the front (a sheet that thins or lifts
+  // off the floor there) does not move the front back to it.
   const double step = dx / 4, x_end = bx.back() + support + step;
   bool wet = false;
   double x_prev = x_start, phi_prev = 0;
@@ -54,12 +56,8 @@ FloorFront floor_front(std::span<const Vec<2>> x, std::span<const Real> volume, 
     const double xs = x_start + static_cast<double>(n) * step;
     if (xs > x_end) break;
     const double p = phi(xs);
-    if (!wet && p >= 0.5)
-      wet = true;
-    else if (wet && p < 0.5) {
-      f.wet_x = x_prev + (0.5 - phi_prev) / (p - phi_prev) * step;
-      break;
-    }
+    if (wet && p < 0.5) f.wet_x = x_prev + (0.5 - phi_prev) / (p - phi_prev) * step;
+    wet = p >= 0.5;
     x_prev = xs;
     phi_prev = p;
   }

@@ -123,7 +123,8 @@ StudyResult run_surge_front_study(const StudyContext& ctx) {
   std::string table =
       "| run | particles | t reached | front points | max rel. error | RMS rel. error | max rel. "
       "error, largest x | lag T_exp - T_sim first / last | dZ/dT sim / exp. | T at far wall | "
-      "far-wall run-up / 2a | put back / removed / clamped | wall s |\n"
+      "far wall / 2a: highest particle, gauge max (T), gauge at 1.5 s | put back / removed / "
+      "clamped | wall s |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, Table> compare;
   for (const Run& run : runs()) {
@@ -150,6 +151,16 @@ StudyResult run_surge_front_study(const StudyContext& ctx) {
       std::cerr << "surge_front: " << run.tag << ": reusing the finished run\n";
     }
     compare[run.tag] = read_csv(o.out_dir / "surge_front_compare.csv");
+    // The case's gauge H_far, 0.01 m before the far wall: the height of the water there.
+    const Table probes = read_csv(o.out_dir / "probes.csv");
+    double gauge_max = kNaN, gauge_T = kNaN, gauge_end = kNaN;
+    if (probes.count("H_far.height") && !probes.at("H_far.height").empty()) {
+      const auto& H = probes.at("H_far.height");
+      const auto k = static_cast<std::size_t>(std::max_element(H.begin(), H.end()) - H.begin());
+      gauge_max = H[k] / (2 * a);
+      gauge_T = probes.at("time")[k] * std::sqrt(2 * 9.81 / a);
+      gauge_end = H.back() / (2 * a);
+    }
     const double e = number_or_nan(m, "surge_front_max_rel_error");
     const double reached = number_or_nan(m, "time_reached");
     const double n0 = number_or_nan(m, "particles_initial");
@@ -164,8 +175,11 @@ StudyResult run_surge_front_study(const StudyContext& ctx) {
         number_or_nan(m, "surge_front_speed"), number_or_nan(m, "surge_front_speed_experiment"),
         number_or_nan(m, "surge_front_t_far_wall"),
         // Runs to t = 1 s stop as the front reaches the far wall: no run-up yet.
-        run.t_end > 1.2 ? fmt::format("{:.2f}", number_or_nan(m, "far_wall_runup_max")) : "-", proj,
-        number_or_nan(m, "particles_removed"), number_or_nan(m, "density_clamped"),
+        run.t_end > 1.2
+            ? fmt::format("{:.2f}, {:.2f} ({:.1f}), {:.2f}", number_or_nan(m, "far_wall_runup_max"),
+                          gauge_max, gauge_T, gauge_end)
+            : "-",
+        proj, number_or_nan(m, "particles_removed"), number_or_nan(m, "density_clamped"),
         number_or_nan(m, "wall_seconds"));
     const std::string key = "surge_front." + run.tag;
     for (const char* k :
@@ -192,10 +206,18 @@ StudyResult run_surge_front_study(const StudyContext& ctx) {
       r.summary.push_back({key + ".projected_fraction", proj / n0, "<= 0.001",
                            "particles put back from past a wall (issue 31 item 1)",
                            proj / n0 <= 0.001});
-      if (run.t_end > 1.2)
+      if (run.t_end > 1.2) {
+        r.metrics[key + ".far_wall_gauge_max"] = gauge_max;
+        r.metrics[key + ".far_wall_gauge_end"] = gauge_end;
         r.summary.push_back({key + ".far_wall_runup_max", number_or_nan(m, "far_wall_runup_max"),
                              "reported", "highest particle on the far wall over 2a, t <= 1.5 s",
                              false});
+        r.summary.push_back({key + ".far_wall_gauge_max", gauge_max, "reported",
+                             fmt::format("water height on the far wall (gauge H_far) over 2a, "
+                                         "largest at T = {:.1f}; {:.2f} at t = 1.5 s",
+                                         gauge_T, gauge_end),
+                             false});
+      }
     }
   }
   // Resolution: how far the front moves between resolutions, against how far the experiments

@@ -156,9 +156,12 @@ class SurgeFrontAnalysis final : public Analysis<2> {
     far_ = opt("far");
     floor_ = opt("floor");
     history_.clear();
-    for (const auto& r : s.at("history"))
-      history_.push_back({r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>(),
-                          r.at(3).get<double>()});
+    for (const auto& r : s.at("history")) {
+      // A state written before the wet-floor front had T, Z (largest x), H: Z stands for both.
+      const bool old = r.size() == 3;
+      history_.push_back({r.at(0).get<double>(), r.at(1).get<double>(),
+                          r.at(old ? 1 : 2).get<double>(), r.at(old ? 2 : 3).get<double>()});
+    }
   }
 
  private:

@@ -3,8 +3,9 @@
 // classic 2-D dam break against Martin & Moyce's surge front — each with the three ghost maps
 // and with boundary integrals, all with the case's defaults (no wall force). Per run: the time
 // reached and the stray-particle counters of metrics.json (particles put back from past a wall,
-// removed, density clamp events); for the dam break the surge front against the experiment
-// and the run-up on the far wall. --quick: a tenth of each run's time.
+// removed, density clamp events). The dam break's surge front against Martin & Moyce, at a
+// resolution that converges, is the surge_front study's (surge_front_study.cpp). --quick: a
+// tenth of each run's time.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -50,15 +51,11 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
   StudyResult r;
   std::ofstream csv(ctx.out_dir / "runs.csv");
   csv << "case,method,t_end,time_reached,particles_initial,particles_projected,particles_removed,"
-         "density_clamped,unstable,surge_front_max_rel_error,surge_front_rms_rel_error,"
-         "far_wall_runup_max,wall_seconds,wall_contacts,wall_contact_particles\n";
+         "density_clamped,unstable,wall_seconds,wall_contacts,wall_contact_particles\n";
   std::string table =
       "| case | method | t reached / t end | particles | put back from past a wall (events, % "
       "of particles) | wall contacts: events (particles) | removed | density clamped | wall s "
       "|\n|---|---|---|---|---|---|---|---|---|\n";
-  std::string front_table =
-      "| method | front points | max rel. error | RMS rel. error | far-wall run-up / 2a |\n"
-      "|---|---|---|---|---|\n";
   for (const std::string& name : cases) {
     const auto path = ctx.source_dir / "cases" / (name + ".yaml");
     for (const Method& meth : methods()) {
@@ -105,12 +102,9 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
       const bool unstable = m.value("unstable", 0) != 0;
       const double contacts = number_or_nan(m, "wall_contacts");
       const double contact_particles = number_or_nan(m, "wall_contact_particles");
-      csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{:.1f},{},{}\n", name, meth.name,
-                         c.t_end, reached, n0, proj, removed, clamped, unstable ? 1 : 0,
-                         number_or_nan(m, "surge_front_max_rel_error"),
-                         number_or_nan(m, "surge_front_rms_rel_error"),
-                         number_or_nan(m, "far_wall_runup_max"), number_or_nan(m, "wall_seconds"),
-                         contacts, contact_particles);
+      csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.1f},{},{}\n", name, meth.name, c.t_end,
+                         reached, n0, proj, removed, clamped, unstable ? 1 : 0,
+                         number_or_nan(m, "wall_seconds"), contacts, contact_particles);
       table += fmt::format(
           "| {} | {} | {:.3f} / {:.3f} | {:.0f} | {:.0f} ({:.3f} %) | {:.0f} ({:.0f}) | {:.0f} | "
           "{:.0f} | {:.0f} |\n",
@@ -129,19 +123,8 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
       r.summary.push_back({key + ".projected_fraction", proj / n0, "<= 0.001",
                            "particles put back from past a wall (issue 31 item 1)",
                            proj / n0 <= 0.001});
-      if (name == "dam_break_2d") {
-        const double e = number_or_nan(m, "surge_front_max_rel_error");
-        front_table += fmt::format("| {} | {:.0f} | {:.3f} | {:.3f} | {:.3f} |\n", meth.name,
-                                   number_or_nan(m, "surge_front_points"), e,
-                                   number_or_nan(m, "surge_front_rms_rel_error"),
-                                   number_or_nan(m, "far_wall_runup_max"));
-        r.metrics[key + ".surge_front_max_rel_error"] = e;
-        r.summary.push_back({key + ".surge_front_max_rel_error", e, "<= 0.05",
-                             "Martin & Moyce (1952) Fig. 3, n^2 = 2 (a = 2.25 in)", e <= 0.05});
-      }
     }
   }
-  run_plot_script(ctx, "plot_free_surface.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Free surfaces against walls\n\n"
      << "Cases `cases/column_on_cylinder_2d.yaml`, `cases/column_on_sphere_3d.yaml` and "
@@ -150,10 +133,9 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
         "free-surface defaults (README, \"Defaults\"). Regenerate with `build/curvsph validate "
         "free_surface`"
      << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "") << ".\n\n"
-     << table << "\n## Surge front of the dam break (Martin & Moyce 1952)\n\n"
-     << "Front = the largest x of the particles on the floor, over the column width a, against "
-        "`data/martin_moyce/front_a_2.25in.csv`, up to the far wall (x = 16 a).\n\n"
-     << front_table << "\n![surge front](surge_front.png)\n\n"
+     << table
+     << "\nThe dam break's surge front against Martin & Moyce (1952), resolved (a/40, a/80), "
+        "and the far-wall run-up: [surge_front](../surge_front/README.md).\n\n"
      << summary_markdown(r.summary);
   return r;
 }

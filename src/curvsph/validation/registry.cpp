@@ -21,6 +21,7 @@ StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surfac
 StudyResult run_moving_cylinder_study(const StudyContext& ctx);   // moving_cylinder_study.cpp
 StudyResult run_cad_at_rest_study(const StudyContext& ctx);       // cad_at_rest_study.cpp
 StudyResult run_cylinder_benchmark_study(const StudyContext& ctx);  // cylinder_benchmark_study.cpp
+StudyResult run_surge_front_study(const StudyContext& ctx);       // surge_front_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -45,8 +46,11 @@ const std::vector<Study>& validation_studies() {
        "2-D tank at rest, boundary integrals, geometric vs volume Shepard (Calderon §3.1)",
        run_hydrostatic_tank_study},
       {"free_surface",
-       "Free surfaces against curved walls, every boundary method; 2-D dam break vs Martin & Moyce",
+       "Free surfaces against curved walls, every boundary method: runs to the end, counters",
        &run_free_surface_study},
+      {"surge_front",
+       "2-D dam break: surge front vs Martin & Moyce (1952), a/20-a/80, far-wall run-up",
+       &run_surge_front_study},
       {"cad_at_rest",
        "Water at rest in polygon tanks (60-120 deg corners) and CAD solids, every boundary method",
        &run_cad_at_rest_study},

@@ -263,13 +263,14 @@ TEST(GhostMap, RefusesSmallConvexObstacle) {
   // Without samples: the convex worst case of the smallest radius.
   EXPECT_THROW(check_ghost_walls(GhostMapKind::density_preserving, walls, 0.05, {}, "c"),
                InputError);
-  // A big obstacle, a tank (concave: never refused), a 3-D sphere obstacle.
+  // A big obstacle, a tank (concave: no convex limit; its radius 0.1 against 2h is
+  // test_concave_refusal.cpp's), a 3-D sphere obstacle.
   WallSet<2> big, tank;
   big.add(std::make_shared<CircleWall>(Vec2d(0, 0), 1.0, FluidSide::outside));
   tank.add(std::make_shared<CircleWall>(Vec2d(0, 0), 0.1, FluidSide::inside));
   std::vector<Vec2> xt{Vec2(0.05, 0.0), Vec2(0.0, -0.09)};
   EXPECT_NO_THROW(check_ghost_walls(GhostMapKind::density_preserving, big, 0.1, x, "c"));
-  EXPECT_NO_THROW(check_ghost_walls(GhostMapKind::density_preserving, tank, 0.3, xt, "c"));
+  EXPECT_NO_THROW(check_ghost_walls(GhostMapKind::density_preserving, tank, 0.1, xt, "c"));
   WallSet<3> ball;
   ball.add(std::make_shared<SphereWall>(Vec3d::Zero(), 0.1, FluidSide::outside));
   std::vector<Vec3> x3{Vec3(0.12, 0, 0)};

@@ -138,8 +138,10 @@ Container setup(const std::string& wall) {
             "[{shape: sphere, center: [0, 0, 0], radius: 0.1, fluid: inside}]",
             ""};
   if (wall == "torus")
+    // dx = 0.018: 2h = 0.072 below the tube radius 0.075 (a concave radius below 2h is
+    // refused at set-up, check_concave_support).
     return {3,
-            0.025,
+            0.018,
             0.075,
             -0.075,
             "{box: {min: [-0.25, -0.25, -0.075], max: [0.25, 0.25, 0]}}",

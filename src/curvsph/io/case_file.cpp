@@ -553,13 +553,14 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
     setup.fail(setup.key("jitter"), "must be in [0, 0.5) (a fraction of dx)");
   if (setup.has("relax")) {
     const Keys relax = setup.sub("relax");
-    relax.allow({"max_steps", "tolerance", "map"});
+    relax.allow({"max_steps", "tolerance", "map", "free_faces"});
     c.relax.enabled = true;
     c.relax.max_steps = relax.integer("max_steps", 2000);
     if (c.relax.max_steps < 0) relax.fail(relax.key("max_steps"), "must be >= 0");
     c.relax.tolerance = relax.positive("tolerance", 1e-3);
     c.relax.map = relax.choice("map", {"mirror", "mirror_beta", "density_preserving", "integrals"},
                                c.boundary.map);
+    c.relax.hold_free_faces = relax.choice("free_faces", {"open", "hold"}, "open") == "hold";
   }
 
   const Keys time = top.sub("time");

@@ -89,6 +89,9 @@ struct RelaxSpec {
   long max_steps = 2000;
   double tolerance = 1e-3;
   std::string map;
+  // free_faces: hold (setup/relax_closure.hpp): box-region faces inside the walls are packed
+  // against as plane walls.
+  bool hold_free_faces = false;
 };
 
 struct ProbeSpec {

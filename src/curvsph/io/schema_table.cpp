@@ -143,6 +143,7 @@ const Row kRows[] = {
 {"setup.relax.max_steps", "integer", "[0, inf)", "2000", "-", "packing steps (0: off)"},
 {"setup.relax.tolerance", "number", "(0, inf)", "0.001", "-", "packing stops below this spread (integrals: max h|R|)"},
 {"setup.relax.map", "choice: mirror | mirror_beta | density_preserving | integrals", "", "derived: boundary.map", "-", "ghost map of the packing, or integrals (one box region)"},
+{"setup.relax.free_faces", "choice: open | hold", "", "open", "-", "ghost packing: hold a box region's faces that lie inside the walls (a free surface) as plane walls, or leave them open"},
 
 {"time", "map", "", "required", "-", "time stepping"},
 {"time.end", "number", "[0, inf)", "required", "s", "end time"},

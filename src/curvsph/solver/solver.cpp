@@ -20,6 +20,7 @@
 #include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/generate.hpp"
+#include "curvsph/setup/relax_closure.hpp"
 #include "curvsph/setup/relax_integrals.hpp"
 
 namespace curvsph {
@@ -100,7 +101,7 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
     ro.map = parse_ghost_map(c.relax.map.empty() ? c.boundary.map : c.relax.map, c.file_name(),
                              "setup.relax.map");
     ro.dx = c.dx;
-    relax_ = relax_particles<D>(P_.x, walls_, cells_, W_, ro);
+    relax_ = relax_particles<D>(P_.x, relax_walls<D>(c, walls_), cells_, W_, ro);
     // The packed particles keep the lattice's count but fill the strip that generation left
     // clear of the walls, so masses of rho0 dx^D would start the fluid below rho0 (7.5 % in
     // a relaxed Couette annulus at dx = 1.875 mm: in tension, and its ghosts pull particles

@@ -6,6 +6,7 @@
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
 //    plane-cylinder), depth H = 0.08 m, dx = H/6.
+// The 2-D solids with ghosts are packed first (setup.relax with free_faces: hold).
 // 2-D runs 1 s (t sqrt(g/H) = 4.4), 3-D 0.5 s (5.5; the CAD closest points make 1 s too long
 // for the study's 20 min on one thread); --quick: a tenth. Each from the hydrostatic start
 // with the three ghost maps and with boundary integrals (geometric Shepard factor), one
@@ -129,9 +130,10 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
     s.describe = "STEP box 0.08 x 0.08 x 0.16 m (6 planar faces)";
   } else {
-    write_step(BRepPrimAPI_MakeCylinder(0.05, 2 * H).Shape(), file);
-    s.region = fmt::format("{{box: {{min: [-0.05, -0.05, 0], max: [0.05, 0.05, {}]}}}}", H);
-    s.describe = "STEP upright cylinder, radius 0.05 m, height 0.16 m (side, floor, lid)";
+    // Radius 0.06 > 2h = 0.053: a concave radius below 2h is refused with ghosts.
+    write_step(BRepPrimAPI_MakeCylinder(0.06, 2 * H).Shape(), file);
+    s.region = fmt::format("{{box: {{min: [-0.06, -0.06, 0], max: [0.06, 0.06, {}]}}}}", H);
+    s.describe = "STEP upright cylinder, radius 0.06 m, height 0.16 m (side, floor, lid)";
   }
   s.walls = YAML::Load(fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", file.string()));
   return s;
@@ -151,6 +153,12 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
                   s.dim == 2 ? "[0, -9.81]" : "[0, 0, -9.81]", m.boundary, t_end, t_end / 10,
                   s.depth, s.bottom));
   root["walls"] = s.walls;
+  // 2-D with ghosts: the lattice packed first inside the walls and the free surface
+  // (setup/relax_closure.hpp); on the bare lattice the walls across it leave the first rows
+  // off balance (findings.md). The integrals keep the bare lattice (their packing closes a box
+  // region only), and so do the 3-D CAD solids (2000 packing steps of CAD closest points).
+  if (s.dim == 2 && std::string(m.name) != "integrals")
+    root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
   return root;
 }
 
@@ -253,6 +261,9 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
         "factor); "
         "linear EOS with c0 = 10 sqrt(g H), continuity density with delta-SPH 0.1, h = 2 dx, "
         "the case defaults otherwise (hydrostatic ghost pressure, the 0.1 dx wall contact). "
+        "The 2-D solids with the ghost maps start from the lattice packed inside the walls and "
+        "the free surface (`setup: {relax: {free_faces: hold}}`); the integrals and the 3-D "
+        "solids from the bare lattice. "
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
         "(deep) and over all.\n\n";

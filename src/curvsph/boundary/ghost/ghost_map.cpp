@@ -114,4 +114,21 @@ void check_ghost_support(GhostMapKind map, double k1, double k2, double support,
                   wall_description, to_string(map), dmax, k1, k2, min_radius, support, 0.5 * dmax));
 }
 
+void check_concave_support(double k1, double k2, double support,
+                           const std::string& wall_description, const std::string& file,
+                           const std::string& key) {
+  const double k = std::max(k1, k2);
+  if (!(k > 0) || 1.0 / k >= support) return;
+  throw InputError(
+      file, key,
+      fmt::format("{}: concave seen from the fluid with radius of curvature {:.6g} (curvatures "
+                  "k1 = {:.6g}, k2 = {:.6g}) where fluid particles lie within the kernel support "
+                  "2h = {:.6g} of it; below 2h the centre of curvature lies inside the support of "
+                  "a particle next to the wall, where the closest point and the ghost are not "
+                  "unique, and the ghosts (at most that radius deep) cannot fill the support "
+                  "behind the wall; the largest h that works is h < {:.6g} (or round the wall "
+                  "with a radius of at least 2h)",
+                  wall_description, 1.0 / k, k1, k2, support, 0.5 / k));
+}
+
 }  // namespace curvsph

@@ -198,4 +198,19 @@ void check_ghost_support(GhostMapKind map, double k1, double k2, double support,
                          const std::string& wall_description, const std::string& file,
                          const std::string& key);
 
+// Set-up refusal for a wall that is concave seen from the fluid (k > 0) with a radius of
+// curvature 1/k below the kernel support 2h, where a fluid particle lies within 2h of it (a
+// fillet or a pipe too narrow for the kernel). Every ghost map has a root there (the depths
+// the wall allows in front are below 1/k), but the construction is not well defined: a
+// particle next to the wall has the centre of curvature inside its support, where the closest
+// point, and with it the ghost of a particle, is not unique (the fluid around it folds onto
+// the whole arc), mirror_beta's weight (1 + k d)/(1 - k d) grows without bound as d nears
+// 1/k (a CAD cylinder of radius 1.75 h blew up, docs/geometry.md), and the ghost layer, the
+// image of the band 0 < d < 1/k, is at most 1/k deep (the mirror maps; less for
+// density_preserving), so the 2h-deep support behind the wall is left short. Throws
+// InputError(file, key, reason) with the radius, 2h and the largest h.
+void check_concave_support(double k1, double k2, double support,
+                           const std::string& wall_description, const std::string& file,
+                           const std::string& key);
+
 }  // namespace curvsph

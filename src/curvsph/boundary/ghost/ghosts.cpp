@@ -405,19 +405,24 @@ void check_ghost_walls(GhostMapKind map, const WallSet<D>& walls, Real support,
       continue;
     }
     // The tightest sample: the one whose largest admissible depth is smallest.
-    std::vector<double> dmax(n);
+    std::vector<double> dmax(n), concave(n);
     std::vector<std::array<double, 2>> kappa(n);
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       const WallPoint<D> p = w.closest(x_f[i].template cast<double>());
       kappa[i] = {p.k1, p.k2};
       dmax[i] = ghost_max_depth(map, p.k1, p.k2);
+      // The largest concave curvature among the feet of particles within the support.
+      concave[i] = p.distance > 0 && p.distance < support ? std::max(p.k1, p.k2) : 0.0;
     }
-    Index worst = 0;
-    for (Index i = 1; i < n; ++i)
+    Index worst = 0, tightest = 0;
+    for (Index i = 1; i < n; ++i) {
       if (dmax[i] < dmax[worst]) worst = i;
+      if (concave[i] > concave[tightest]) tightest = i;
+    }
     check_ghost_support(map, kappa[worst][0], kappa[worst][1], support, rmin, w.describe(), file,
                         key);
+    check_concave_support(kappa[tightest][0], kappa[tightest][1], support, w.describe(), file, key);
   }
 }
 

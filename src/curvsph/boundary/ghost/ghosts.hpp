@@ -137,8 +137,10 @@ class GhostSet {
 
 // Set-up refusal (exit 2): for every wall N, the curvatures at the closest points of the
 // given fluid positions (all of them: where the fluid can reach the wall) are checked with
-// check_ghost_support(); the first failure throws InputError(file, "walls.N", reason)
-// naming the wall, its smallest radius of curvature and the largest h that works.
+// check_ghost_support(), and the feet of those within the support (0 < d < 2h) with
+// check_concave_support() (a concave radius of curvature below 2h); the first failure throws
+// InputError(file, "walls.N", reason) naming the wall, its radius of curvature and the
+// largest h that works.
 // Walls without any sample are checked with the conservative convex worst case of their
 // smallest radius of curvature (ghost_max_depth_convex).
 template <int D>

@@ -14,6 +14,10 @@
 // the unit test checks this limit on a lattice.
 // Near walls the sum is truncated like the fluid pressure sum; the boundary model's 1/gamma
 // (boundary_model.hpp contract) renormalises it when this runs before add_accelerations().
+// Ghost walls complete the sum instead: each ghost enters it as a neighbour with its no-slip
+// velocity (ghost_boundary.cpp), so the term stays the Newtonian viscosity above up to the
+// wall (tests/cases/test_couette_startup.cpp: a plane Couette start-up follows the series
+// with nu + alpha h c0 / (2 (D + 2)); without the ghosts the wall rows slip, 0.27 U at 10 s).
 #include <cmath>
 
 #include "curvsph/core/parallel.hpp"

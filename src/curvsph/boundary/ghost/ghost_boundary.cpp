@@ -25,6 +25,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
     difference_ = c.pressure_difference;
+    av_alpha_h_c0_ = static_cast<Real>(c.artificial_alpha) * W_.h * F_.eos.c0;
     Vec3d lo = c.domain_min, hi = c.domain_max;
     cells_.configure(W_.support, lo, hi, c.periodic);
   }
@@ -154,6 +155,9 @@ class GhostBoundary final : public BoundaryModel<D> {
       const Real pi_s2 = (no_tension ? std::max(P.p[i], Real(0)) : P.p[i]) * inv_si2;
       const Real mu = F_.viscosity[P.phase[i]];
       Vec<D> grad_p = Vec<D>::Zero(), visc = Vec<D>::Zero(), push = Vec<D>::Zero();
+      Vec<D> av = Vec<D>::Zero();  // artificial viscosity's ghost terms (acceleration)
+      const Real av_ci =
+          av_alpha_h_c0_ > 0 ? av_alpha_h_c0_ * F_.rho0[P.phase[i]] / P.rho[i] : Real(0);
       bool any = false;
       const bool track = loads && i < loads->count();
       cells_.for_each_neighbor(P.x[i], G_.x, [&](Index g, const Vec<D>& r, Real r2) {
@@ -175,8 +179,20 @@ class GhostBoundary final : public BoundaryModel<D> {
         grad_p += gp;
         visc += vs;
         any = true;
+        // The artificial viscosity (physics/artificial_viscosity.hpp) with the ghost as a
+        // neighbour of volume beta_g m_s / rho_s and its no-slip velocity: without these terms
+        // the wall is free-slip for that viscosity, and the near-wall layer slips by the
+        // share of the momentum it carries (couette/findings.md, "Kernel width").
+        Vec<D> avg = Vec<D>::Zero();
+        if (av_ci > 0) {
+          const Real eta2 = Real(0.01) * W_.h * W_.h;
+          const Real Vg = bg * P.mass[s] / P.rho[s];
+          avg = (av_ci * f * Vg * (P.v[i] - G_.v[g]).dot(r) / (r2 + eta2)) * r;
+          av += avg;
+        }
         if (track)
-          react(i, g, Vec<D>(gp - mu * vs), (P.x[i] - Real(0.5) * r).template cast<double>());
+          react(i, g, Vec<D>(gp - mu * vs - P.mass[i] * avg),
+                (P.x[i] - Real(0.5) * r).template cast<double>());
         if (s == i && G_.reflections[g] == 1) {
           const Real d = static_cast<Real>(G_.source_depth[g]);
           if (wf.active(d)) {
@@ -188,7 +204,7 @@ class GhostBoundary final : public BoundaryModel<D> {
       });
       if (!any) return;
       const Real inv_m = 1 / P.mass[i];
-      P.a[i] += -inv_m * grad_p + mu * inv_m * visc + push;
+      P.a[i] += -inv_m * grad_p + mu * inv_m * visc + push + av;
     };
     if (loads)
       WallLoadSums<D>::for_blocks(static_cast<Index>(P.size()), false, body);
@@ -253,6 +269,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   bool hydrostatic_ = false;  // boundary.ghost_pressure: hydrostatic
   bool no_tension_ = false;   // boundary.wall_tension: false
   bool difference_ = false;   // pressure_gradient: difference
+  Real av_alpha_h_c0_ = 0;    // artificial_viscosity.alpha h c0 (0: off)
   GhostSet<D> G_;
   CellList<D> cells_;
 };

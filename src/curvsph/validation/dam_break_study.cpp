@@ -181,7 +181,8 @@ StudyResult run_dam_break_study(const StudyContext& ctx) {
         "comes from "
      << (ctx.quick ? "`--quick`" : "the full study")
      << ". Probes at 1 kHz, VTK snapshots off; the case as committed (boundary force of "
-        "Calderon §3.2 on).\n\n"
+        "Calderon §3.2 off: `boundary.wall_force` false, the wall contact of "
+        "`boundary.contact` at 0.1 dx).\n\n"
         "**P1's peak.** After the first impact a ringing of ~100 Hz (the box face's acoustic "
         "mode at c0 = 40 m/s; findings.md) grows at P1-P4 and sets the maximum over the run. "
         "The target figure is therefore the first impact's peak, `p1_first_peak`: P1's "

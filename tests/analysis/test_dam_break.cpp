@@ -70,8 +70,8 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
   });
   // Run: P1 delayed by 10 ms and scaled by 0.9, P2 exact; H2 = 0.2 t + 0.01.
   write_probes(dir / "probes.csv", [](std::ostream& p, double t) {
-    p << pulse(t, 0.41, 9000) << ',' << pulse(t, 0.40, 5000) << ",nan,0,0,0,0,0,0.1,"
-      << 0.2 * t + 0.01 << ",0.3,0.5";
+    p << pulse(t, 0.41, 9000) << ',' << pulse(t, 0.40, 5000) << ",nan,0,0,0,0," << -300 * t
+      << ",0.1," << 0.2 * t + 0.01 << ",0.3,0.5";
   });
   const nlohmann::json m = analyse(dir);
   EXPECT_NEAR(m["p1_peak"].get<double>(), 9000, 1e-6);
@@ -94,6 +94,25 @@ TEST(DamBreakAnalysis, FiguresOfSyntheticRecords) {
   }
   EXPECT_NEAR(m["p1_rms_error"].get<double>(), std::sqrt(e2 / 1101) / 10000, 1e-6);
   EXPECT_NEAR(m["p2_rms_error"].get<double>(), 0.0, 1e-6);
+  // P3 is dry (reads 0) against an experimental 0, P4 0 against 0.
+  EXPECT_NEAR(m["p3_rms_error"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(m["p4_rms_error"].get<double>(), 0.0, 1e-12);
+  // Heights over the 0.55 m depth: H1 0.1 against 0.1 t, H2 off by 0.01 everywhere, H3 0.3
+  // against 0.3 t, H4 exact (the file's columns are H3, H2, H1, H4).
+  double h1 = 0, h3 = 0;
+  for (int i = 0; i <= 1100; ++i) {
+    const double t = i * 1e-3;
+    h1 += std::pow(0.1 - 0.1 * t, 2);
+    h3 += std::pow(0.3 - 0.3 * t, 2);
+  }
+  EXPECT_NEAR(m["h1_rms_error"].get<double>(), std::sqrt(h1 / 1101) / 0.55, 1e-9);
+  EXPECT_NEAR(m["h2_rms_error"].get<double>(), 0.01 / 0.55, 1e-9);
+  EXPECT_NEAR(m["h3_rms_error"].get<double>(), std::sqrt(h3 / 1101) / 0.55, 1e-9);
+  EXPECT_NEAR(m["h4_rms_error"].get<double>(), 0.0, 1e-12);
+  // Lowest readings: P8 = -300 t reaches -330 Pa at the run's end; the dry P3 reads 0.
+  EXPECT_NEAR(m["p8_min"].get<double>(), -330, 1e-6);
+  EXPECT_NEAR(m["p3_min"].get<double>(), 0, 1e-12);
+  EXPECT_NEAR(m["sensor_min"].get<double>(), -330, 1e-6);
   EXPECT_TRUE(std::filesystem::exists(dir / "dam_break_comparison.csv"));
 
   // A missing experiment file is an input error naming the key.

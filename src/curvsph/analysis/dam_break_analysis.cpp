@@ -172,7 +172,8 @@ class DamBreakAnalysis final : public Analysis<3> {
     m["p1_rise_time_exp"] = rise;
     m["h2_at_1s"] = t >= 1.0 ? sim_at(sim, column.at("H2"), 1.0) : kNaN;
     m["h2_at_1s_exp"] = exp_.at("H2", 1.0);
-    for (const char* n : {"P1", "P2"}) {
+    // RMS of (simulated - experimental) over the samples in [0, window]; NaN: no sample.
+    auto rms = [&](const std::string& n) {
       double e2 = 0;
       long count = 0;
       for (std::size_t i = 0; i < sim.t.size() && sim.t[i] <= window + 1e-12; ++i) {
@@ -181,9 +182,26 @@ class DamBreakAnalysis final : public Analysis<3> {
         e2 += d * d;
         ++count;
       }
-      m[fmt::format("p{}_rms_error", n[1] - '0')] =
-          count > 0 ? std::sqrt(e2 / static_cast<double>(count)) / p1_exp_peak : kNaN;
+      return count > 0 ? std::sqrt(e2 / static_cast<double>(count)) : kNaN;
+    };
+    for (int k = 1; k <= 4; ++k)
+      m[fmt::format("p{}_rms_error", k)] = rms(fmt::format("P{}", k)) / p1_exp_peak;
+    // Heights over the benchmark's initial water depth (0.55 m, data/spheric2/README.md).
+    constexpr double depth = 0.55;
+    for (int k = 1; k <= 4; ++k)
+      m[fmt::format("h{}_rms_error", k)] = rms(fmt::format("H{}", k)) / depth;
+    // The lowest reading of each sensor over the window (tension at the box; a dry sensor
+    // reads 0), and the lowest of all eight.
+    double lowest = kNaN;
+    for (int k = 1; k <= 8; ++k) {
+      const std::string n = fmt::format("P{}", k);
+      double lo = kNaN;
+      for (std::size_t i = 0; i < sim.t.size() && sim.t[i] <= window + 1e-12; ++i)
+        if (std::isnan(lo) || value(n, i) < lo) lo = value(n, i);
+      m[fmt::format("p{}_min", k)] = lo;
+      if (std::isnan(lowest) || lo < lowest) lowest = lo;
     }
+    m["sensor_min"] = lowest;
     m["rms_window_end"] = window;
 
     std::ofstream csv(out_dir / "dam_break_comparison.csv");

@@ -16,8 +16,12 @@
 //   p1_rise_time_exp = p1_peak_time_exp - p1_impact_time_exp (the experiment's impact-to-peak
 //   time, 0.020 s: the same rule gives the experiment's own peak);
 //   h2_at_1s (and _exp): the water height at H2 (x = 0.992) at t = 1 s;
-//   p1_rms_error, p2_rms_error: RMS of (simulated - experimental) pressure over
+//   p1_rms_error .. p4_rms_error: RMS of (simulated - experimental) pressure over
 //   t in [0, min(1.5 s, end)], divided by the experimental P1 peak (a dry sensor reads 0);
+//   h1_rms_error .. h4_rms_error: RMS of (simulated - experimental) height over the same
+//   window, divided by the initial water depth 0.55 m;
+//   p1_min .. p8_min, sensor_min: each sensor's lowest reading over the window (Pa), and
+//   the lowest of the eight;
 //   rms_window_end: the end of that window.
 // Writes dam_break_comparison.csv: time, then NAME (simulated) and NAME_exp (experiment,
 // interpolated) for P1..P8 and H1..H4, at the probe times.

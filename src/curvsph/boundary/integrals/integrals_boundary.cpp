@@ -467,8 +467,8 @@ void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
     for (const Pair& q : pairs_of(i)) {
       wall += (P.v[i] - eu_[q.b]).dot(en_[q.b]) * q.w * ea_[q.b];
     }
-    // Item 9: conservative_wall doubles the flux, the partner of the momentum's (p_b + p_i) ~ 2
-    // p_i.
+    // Item 9 (conservative, conservative_wall): twice the flux, the partner of the momentum's
+    // p_b + p_i ~ 2 p_i.
     if (wall_pair_) wall *= 2;
     P.drho[i] = (P.drho[i] - P.rho[i] * wall) / gamma_[i];
   });

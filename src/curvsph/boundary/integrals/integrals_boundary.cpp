@@ -139,6 +139,36 @@
 // 8. Optional wall force (boundary.wall_force, boundary/wall_force.hpp): for a particle at
 //    distance d < d0 = 0.1 dx from a wall, a_i += (c0^2 / dx) (1 - d/d0)^2 n_w, from each wall
 //    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
+//
+// 9. Energy (boundary.pressure: conservative | conservative_wall | conservative_pairs).
+//    With a static wall, no viscosity and E = sum_i m_i (|u_i|^2/2 - g.x_i + e(rho_i)),
+//    de/drho = p/rho^2, the semi-discrete rate dE/dt = sum_i m_i u_i.(a_i - g) + sum_i V_i
+//    (p_i/rho_i) drho_i/dt (V_i = m_i/rho_i = 1/sigma_i) vanishes when the pressure terms of 2.
+//    are the negative adjoint of the divergence of 5. (our derivation). Pair by pair, for the
+//    forms of 2. and 5. as they stand (symmetric):
+//    - fluid pairs: the momentum gives -sum_ij (p_i/sigma_i^2)(u_i/gamma_i - u_j/gamma_j).
+//      grad_i W_ij, the continuity +sum_ij p_i/(gamma_i sigma_i sigma_j)(u_i - u_j).grad_i W_ij:
+//      they cancel (up to the sigma_i/sigma_j mismatch of plain SPH) only where gamma_i =
+//      gamma_j. conservative_pairs puts p_j/(gamma_j sigma_j^2) in the pair term, m_i a_i =
+//      -sum_j (p_i/(gamma_i sigma_i^2) + p_j/(gamma_j sigma_j^2)) grad_i W_ij: the two cancel
+//      and the pair forces are equal and opposite, but by 1. the sum of p/gamma estimates
+//      grad p + (p_w/gamma_w) grad gamma, which the wall term of 2. does not balance: kept to
+//      measure this part of the budget only (it does not hold a tank at rest).
+//    - wall: the momentum's (1/(gamma_i rho_i)) sum_b (p_b + p_i) W_ib A_b n_b works
+//      sum_i (V_i/gamma_i) sum_b (p_b + p_i) W_ib A_b u_i.n_b, the continuity's wall term only
+//      -sum_i (V_i/gamma_i) p_i sum_b W_ib A_b u_i.n_b: the power sum_i (V_i/gamma_i) sum_b p_b
+//      W_ib A_b u_i.n_b is left (a wall pressure working on particles that move, the wall
+//      itself at rest), and p_b, extrapolated from the neighbours (3.), follows the acoustic
+//      field. The partner of p_b + p_i ~ 2 p_i is twice the continuity's wall term,
+//        drho_i/dt = (rho_i/gamma_i) [ sum_j V_j (u_i - u_j).grad_i W_ij
+//                                      - 2 sum_b (u_i - u_b).n_b W_ib A_b ]
+//      (the relative velocity 2 (u_i - u_b).n_b of a mirror ghost), which leaves p_b - p_i in
+//      that power. conservative_wall does only this. conservative also takes the wall
+//      pressure from the particle itself, p_b = p_i + rho_i g.(x_b - x_i) (exact for the
+//      hydrostatic field, as 3.), so that the power left is sum_i (m_i/gamma_i) sum_b
+//      g.(x_b - x_i) W_ib A_b u_i.n_b: the work of a force that depends on x_i only (a
+//      potential below a flat floor), not on the acoustic field.
+//    The measured budgets are in docs/validation/cad_at_rest/integrals_findings.md.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -176,6 +206,16 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   consistent_ = c.boundary.pressure == "consistent";
   tensile_ = c.boundary.pressure == "tensile_control";
   no_tension_ = !c.boundary.wall_tension;
+  const std::string& form = c.boundary.pressure;
+  local_wall_ = form == "conservative";
+  wall_pair_ = form == "conservative_wall" || local_wall_;
+  fluid_pair_ = form == "conservative_pairs";
+  if (wall_pair_ || fluid_pair_) {
+    // Item 9 pairs the symmetric pressure terms with the continuity terms.
+    if (c.pressure_difference)
+      throw InputError(c.file_name(), "boundary.pressure",
+                       "'" + form + "' needs pressure_gradient: symmetric");
+  }
   dx_ = static_cast<Real>(c.dx);
   if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, dx_);
 }
@@ -285,7 +325,6 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
   pair_local_.resize(P.size());
   pair_thread_.resize(P.size());
   active_.assign(ex_.size(), 0);
-  const double h = W_.h;
   // An element is active (its wall pressure is extrapolated) when a particle lies within 2h;
   // the margin covers the round-off between this separation and the fluid cell list's, so
   // that no element with fluid in its support is left at p_b = 0.
@@ -352,39 +391,9 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
           break;
         }
         case ShepardMode::geometric:
-        case ShepardMode::monolithic: {
-          if (idx.empty()) break;
-          auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
-            return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
-                                                   : shepard_monolithic<D>(el_, cand, xs, h, quad_);
-          };
-          const Real tol = Real(1e-6) * W_.h, tol2 = tol * tol;
-          // Squared norms: this test runs over every candidate of every particle near a wall.
-          const bool unshifted = std::all_of(
-              shift.begin(), shift.end(), [&](const Vec<D>& s) { return s.squaredNorm() < tol2; });
-          if (unshifted) {
-            g = static_cast<Real>(eval(idx, x.template cast<double>()));
-            break;
-          }
-          // Elements seen through periodic images: 1 - gamma is additive over elements, so
-          // each image group contributes 1 - gamma(x - s) over its own elements.
-          thread_local std::vector<std::size_t> group;
-          thread_local std::vector<unsigned char> done;
-          done.assign(idx.size(), 0);
-          double sum = 1;
-          for (std::size_t k = 0; k < idx.size(); ++k) {
-            if (done[k]) continue;
-            group.clear();
-            for (std::size_t l = k; l < idx.size(); ++l)
-              if (!done[l] && (shift[l] - shift[k]).norm() < tol) {
-                group.push_back(idx[l]);
-                done[l] = 1;
-              }
-            sum -= 1 - eval(group, (x - shift[k]).template cast<double>());
-          }
-          g = static_cast<Real>(sum);
+        case ShepardMode::monolithic:
+          if (!idx.empty()) g = element_gamma(x, idx, shift);
           break;
-        }
         case ShepardMode::none:
           break;
       }
@@ -398,6 +407,40 @@ void IntegralsBoundary<D>::prepare(const Particles<D>& P, Real /*t*/) {
   penetrated_.clear();
   for (Index i = 0; i < n; ++i)
     if (near_[i] && wall_dist_[i] <= 0) penetrated_.push_back(i);
+}
+
+// The geometric (or monolithic) Shepard factor at x from its candidate elements `idx`, seen
+// through the periodic image shifts `shift` (x_b image = x_b + s).
+template <int D>
+Real IntegralsBoundary<D>::element_gamma(const Vec<D>& x, std::span<const std::size_t> idx,
+                                         std::span<const Vec<D>> shift) const {
+  const double h = W_.h;
+  auto eval = [&](std::span<const std::size_t> cand, const VecD<D>& xs) {
+    return mode_ == ShepardMode::geometric ? geometric_(el_, cand, xs)
+                                           : shepard_monolithic<D>(el_, cand, xs, h, quad_);
+  };
+  const Real tol = Real(1e-6) * W_.h, tol2 = tol * tol;
+  // Squared norms: this test runs over every candidate of every particle near a wall.
+  const bool unshifted = std::all_of(shift.begin(), shift.end(),
+                                     [&](const Vec<D>& s) { return s.squaredNorm() < tol2; });
+  if (unshifted) return static_cast<Real>(eval(idx, x.template cast<double>()));
+  // Elements seen through periodic images: 1 - gamma is additive over elements, so each
+  // image group contributes 1 - gamma(x - s) over its own elements.
+  thread_local std::vector<std::size_t> group;
+  thread_local std::vector<unsigned char> done;
+  done.assign(idx.size(), 0);
+  double sum = 1;
+  for (std::size_t k = 0; k < idx.size(); ++k) {
+    if (done[k]) continue;
+    group.clear();
+    for (std::size_t l = k; l < idx.size(); ++l)
+      if (!done[l] && (shift[l] - shift[k]).norm() < tol) {
+        group.push_back(idx[l]);
+        done[l] = 1;
+      }
+    sum -= 1 - eval(group, (x - shift[k]).template cast<double>());
+  }
+  return static_cast<Real>(sum);
 }
 
 template <int D>
@@ -424,6 +467,9 @@ void IntegralsBoundary<D>::add_density_rate(Particles<D>& P) {
     for (const Pair& q : pairs_of(i)) {
       wall += (P.v[i] - eu_[q.b]).dot(en_[q.b]) * q.w * ea_[q.b];
     }
+    // Item 9 (conservative, conservative_wall): twice the flux, the partner of the momentum's
+    // p_b + p_i ~ 2 p_i.
+    if (wall_pair_) wall *= 2;
     P.drho[i] = (P.drho[i] - P.rho[i] * wall) / gamma_[i];
   });
 }
@@ -451,8 +497,20 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
   WallLoadSums<D>* loads = this->loads_;
   const auto body = [&](Index i) {
     const Real inv_g = 1 / gamma_[i];
-    const Vec<D> a_before = P.a[i];
+    Vec<D> a_before = P.a[i];
     P.a[i] *= inv_g;
+    if (fluid_pair_) {
+      // Item 9: each pair's p_j / sigma_j^2 over gamma_j instead of gamma_i. The fluid part
+      // then conserves momentum pair by pair and is internal: the loads take the wall terms.
+      Vec<D> d = Vec<D>::Zero();
+      fluid_cells_.for_each_neighbor(P.x[i], P.x, [&](Index j, const Vec<D>& r, Real r2) {
+        if (j == i || gamma_[j] == gamma_[i]) return;
+        const Real sj = P.sigma[j];
+        d += (P.p[j] / (sj * sj) * (1 / gamma_[j] - inv_g) * W_.gradient_factor(std::sqrt(r2))) * r;
+      });
+      P.a[i] -= d / P.mass[i];
+      a_before = P.a[i];
+    }
     if (!near_[i]) return;
     const bool track = loads && i < loads->count();
     const Real mu = F_.viscosity[P.phase[i]];
@@ -462,7 +520,10 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real wa = q.w * ea_[b];
       // boundary.wall_tension: false: the wall only pushes (case_file.hpp).
       // pressure_gradient: difference (physics/pressure_gradient.hpp): (p_b - p_i).
-      const Real pb = difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i];
+      // Item 9, conservative: the wall pressure from p_i itself, p_i + rho_i g.(x_b - x_i)
+      // (exact for the hydrostatic field), so that its work pairs with p_i's continuity term.
+      const Real pw = local_wall_ ? P.p[i] - P.rho[i] * g.dot(q.r) : p_wall_[b];
+      const Real pb = difference ? pw - P.p[i] : pw + P.p[i];
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));

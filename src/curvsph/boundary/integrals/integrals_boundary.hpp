@@ -7,7 +7,8 @@
 // Optional keys: `boundary.wall_force: true` adds a short-range repulsion for particles closer
 // than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
 // symmetric | tensile_control` chooses the near-wall pressure gradient (items 2b and 2d of the
-// .cpp; symmetric by default).
+// .cpp; symmetric by default); `conservative | conservative_wall | conservative_pairs` pair
+// the wall and fluid terms of the momentum with the continuity's for energy (item 9).
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -52,6 +53,9 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   const std::vector<Real>& wall_pressure() const { return p_wall_; }
 
  private:
+  // The geometric (monolithic) Shepard factor at x from its candidate elements (prepare()).
+  Real element_gamma(const Vec<D>& x, std::span<const std::size_t> idx,
+                     std::span<const Vec<D>> shift) const;
   // Wall time of the gamma computation in prepare(): thread-seconds over the team size.
   double shepard_seconds_ = 0;
   void build_elements(const Particles<D>& P);
@@ -83,6 +87,12 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   bool consistent_ = false;        // boundary.pressure: consistent
   bool tensile_ = false;           // boundary.pressure: tensile_control (consistent where p_i < 0)
   bool no_tension_ = false;        // boundary.wall_tension: false
+  // boundary.pressure (item 9 of the .cpp): conservative_wall | conservative double the
+  // continuity's wall term, conservative takes p_b from p_i; conservative_pairs gives each
+  // fluid pair p_j / gamma_j.
+  bool wall_pair_ = false;
+  bool local_wall_ = false;  // conservative: p_b from p_i (item 9)
+  bool fluid_pair_ = false;
   Real dx_ = 0;
   bool built_ = false;
 

@@ -27,7 +27,7 @@ cd "$work/elsewhere" || fail "cd"
 [ -f dam/metrics.json ] || fail "dam_break_2d wrote no metrics.json"
 # The U-bend pipe reads its STEP part (walls.0.file), coarse: a few hundred particles.
 "$bin" run ../mine/u_pipe_at_rest.yaml --out pipe --threads 1 --quiet \
-  --set resolution.dx=0.03 --set time.end=0.002 > pipe.txt 2>&1 || { cat pipe.txt; fail "u_pipe_at_rest: exit $?"; }
+  --set time.end=0.0005 > pipe.txt 2>&1 || { cat pipe.txt; fail "u_pipe_at_rest: exit $?"; }
 [ -f pipe/metrics.json ] || fail "u_pipe_at_rest wrote no metrics.json"
 
 # A file found nowhere: exit 2, the key named, beside the case and the data folder listed.

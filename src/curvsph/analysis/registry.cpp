@@ -12,6 +12,7 @@
 #include "curvsph/analysis/taylor_green_analysis.hpp"
 #include "curvsph/analysis/throttled_pipe.hpp"
 #include "curvsph/core/error.hpp"
+#include "curvsph/io/schema_section.hpp"
 
 namespace curvsph {
 namespace {
@@ -65,7 +66,12 @@ template <int D>
 std::unique_ptr<Analysis<D>> make_analysis(const std::string& name, const YAML::Node& params,
                                            const Case& c) {
   for (const auto& e : entries<D>())
-    if (name == e.name && e.analysis) return e.analysis(params, c);
+    if (name == e.name && e.analysis) {
+      // The table's rows of analysis.NAME type and range the parameters (issue 34 item 1);
+      // the analysis then checks what depends on the case.
+      schema::check_section(params, c.file_name(), "analysis." + name);
+      return e.analysis(params, c);
+    }
   throw InputError(c.file_name(), "analysis." + name,
                    "unknown analysis in " + std::to_string(D) + "-D (known: " + names<D>() + ")");
 }
@@ -74,7 +80,10 @@ template <int D>
 void apply_initial_field(const Case& c, const Eos& eos, const std::vector<Real>& rho0,
                          Particles<D>& P) {
   for (const auto& e : entries<D>())
-    if (c.initial_field == e.name && e.initial) return e.initial(c, c.initial_params, eos, rho0, P);
+    if (c.initial_field == e.name && e.initial) {
+      schema::check_section(c.initial_params, c.file_name(), "initial." + c.initial_field);
+      return e.initial(c, c.initial_params, eos, rho0, P);
+    }
   throw InputError(
       c.file_name(), "initial." + c.initial_field,
       "unknown initial flow field in " + std::to_string(D) + "-D (known: " + names<D>() + ")");

@@ -391,7 +391,8 @@ typename OpenBoundaries<D>::LevelSums OpenBoundaries<D>::density_level_sums(
       interior = walls[w].distance_lower_bound(x) >= support ||
                  std::abs(walls[w].closest(x).distance) >= support;
     if (!interior) continue;
-    s.sum += static_cast<double>(P.rho[i] / rho_set[static_cast<std::size_t>(i)]);
+    const double q = static_cast<double>(P.rho[i]) / rho_set[static_cast<std::size_t>(i)];
+    s.sum += std::llround((q - 1) * kLevelUnit);
     s.count += 1;
   }
   return s;

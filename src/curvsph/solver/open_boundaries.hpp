@@ -84,12 +84,14 @@ class OpenBoundaries {
   };
   Change after_drift(Particles<D>& P, Real dt);
 
-  // The density level kappa (see the head of the file): the sums of rho / rho_set and their
-  // count over this rank's owned fluid particles [0, owned) at least one support from every
-  // wall, rho_set the set-up densities of [0, owned); the caller reduces them over the ranks.
+  // The density level kappa (see the head of the file): over this rank's owned fluid
+  // particles [0, owned) at least one support from every wall, rho_set the set-up densities of
+  // [0, owned), the sum of rho / rho_set - 1 in units of 2^-32 and the count; integers, so
+  // that the caller's sum over the ranks, and kappa, do not depend on the partition.
   struct LevelSums {
-    double sum = 0, count = 0;
+    std::int64_t sum = 0, count = 0;
   };
+  static constexpr double kLevelUnit = 4294967296.0;  // 2^32
   LevelSums density_level_sums(const Particles<D>& P, const std::vector<Real>& rho_set,
                                const WallSet<D>& walls, Index owned) const;
   void set_density_level(Real kappa) { level_ = kappa; }

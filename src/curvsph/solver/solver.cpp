@@ -434,9 +434,10 @@ void Solver<D>::initialize() {
     // measured on this first sum; the rates again with them (the first clamp count kept).
     const auto& comm = decomp_.comm();
     const auto s = open_.density_level_sums(P_, rho_set, walls_, owned);
-    const double count = comm.sum(s.count);
+    const std::int64_t count = comm.sum(s.count);
     if (count > 0) {
-      open_.set_density_level(static_cast<Real>(comm.sum(s.sum) / count));
+      const double mean = static_cast<double>(comm.sum(s.sum)) / static_cast<double>(count);
+      open_.set_density_level(static_cast<Real>(1 + mean / OpenBoundaries<D>::kLevelUnit));
       const auto clamped = stray_.density_clamped;
       compute_rates(0);
       stray_.density_clamped = clamped;

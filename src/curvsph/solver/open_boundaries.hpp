@@ -16,10 +16,23 @@
 //   A buffer particle that crosses the boundary (d >= 0) becomes fluid, and a copy of it
 //   enters the buffer at its back, x - L n (the buffer is periodic along the normal).
 // - Outflow buffer: a fluid particle that crosses the boundary (d < 0) becomes a buffer
-//   particle; its pressure is the prescribed one (density from the equation of state), its
-//   velocity the Shepard average of its fluid neighbours (kept once it has none); it is
-//   deleted when it leaves the buffer's back (d < -L). One that drifts back (d >= 0) becomes
-//   fluid again and is taken off the outflow count.
+//   particle; its density is the one the fluid's density sum gives at rest at the prescribed
+//   pressure (see density_level below), its velocity the Shepard average of the fluid around
+//   its mirror point x - 2 d n (Tafuni et al. 2018 §3.2 extrapolate at that point; kept once
+//   the fluid there is gone); it is deleted when it leaves the buffer's back (d < -L). One that
+//   drifts back (d >= 0) becomes fluid again and is taken off the outflow count.
+// - Density level (density.method summation). The density sum of a particle arrangement at
+//   rest is not its set-up density: on a square lattice with h = 1.3 dx the Wendland C2 sum
+//   sum_j W(|x_i - x_j|) dx^2 is 1.0105 (the discrete kernel sum departs from its integral,
+//   1; Quinlan, Basa & Lastiwka 2006, Int. J. Numer. Meth. Engng 66, 2064), so fluid at rest
+//   stands at rho = 1.0105 rho0 and p = p0 + 0.0105 rho0 c0^2 (to first order). An outflow
+//   buffer at the equation-of-state density of its pressure, rho0 for p0, is then a pressure
+//   step of -0.0105 rho0 c0^2, which (linear acoustics, u = dp / (rho0 c0)) drains the
+//   channel at u = 0.0105 c0: 0.16 m/s at c0 = 15 (measured 0.15-0.18 at the outlet of the
+//   Schäfer-Turek channel at t = 0.01 s), against a mean inflow of 1 m/s ramped over 1 s. The
+//   buffer is therefore set at kappa rho(p_set), kappa the fluid's own level: the mean of rho_sum /
+//   rho_set over the fluid particles at least one support from every wall at the first density sum
+//   (1 with the continuity equation).
 // - A fluid particle that flows back behind an inflow (d < 0 within the inflow's cross
 //   section) is deleted and counted as outflow.
 //
@@ -71,6 +84,20 @@ class OpenBoundaries {
   };
   Change after_drift(Particles<D>& P, Real dt);
 
+  // The density level kappa (see the head of the file): over this rank's owned fluid
+  // particles [0, owned) at least one support from every wall, rho_set the set-up densities of
+  // [0, owned), the sum of rho / rho_set - 1 in units of 2^-32 and the count; integers, so
+  // that the caller's sum over the ranks, and kappa, do not depend on the partition.
+  struct LevelSums {
+    std::int64_t sum = 0, count = 0;
+  };
+  static constexpr double kLevelUnit = 4294967296.0;  // 2^32
+  LevelSums density_level_sums(const Particles<D>& P, const std::vector<Real>& rho_set,
+                               const WallSet<D>& walls, Index owned) const;
+  void set_density_level(Real kappa) { level_ = kappa; }
+  Real density_level() const { return level_; }
+  bool has_outflow() const;
+
   // After the equation of state (halo densities and pressures current): the state of the
   // owned buffer particles [0, owned) at time t (velocity, density, number density, pressure).
   void buffer_state(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
@@ -108,6 +135,7 @@ class OpenBoundaries {
   Real dx_ = 0, depth_ = 0;
   int layers_ = 0;
   Real rho0_ = 1;
+  Real level_ = 1;  // kappa: the outflow buffers' density over rho(p_set)
   VecD<D> box_lo_ = VecD<D>::Zero(), box_hi_ = VecD<D>::Zero();  // lateral bound of sections
   bool has_box_ = false;
   std::string file_;

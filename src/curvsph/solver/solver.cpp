@@ -430,6 +430,20 @@ void Solver<D>::initialize() {
   if (!continuity_) rho_set.assign(P_.rho.begin(), P_.rho.begin() + owned);
   rates_time_ = t_;
   compute_rates(0);
+  if (!continuity_ && !restored_ && open_.has_outflow()) {
+    // The outflow buffers at the fluid's own density level (solver/open_boundaries.hpp),
+    // measured on this first sum; the rates again with them (the first clamp count kept).
+    const auto& comm = decomp_.comm();
+    const auto s = open_.density_level_sums(P_, rho_set, walls_, owned);
+    const std::int64_t count = comm.sum(s.count);
+    if (count > 0) {
+      const double mean = static_cast<double>(comm.sum(s.sum)) / static_cast<double>(count);
+      open_.set_density_level(static_cast<Real>(1 + mean / OpenBoundaries<D>::kLevelUnit));
+      const auto clamped = stray_.density_clamped;
+      compute_rates(0);
+      stray_.density_clamped = clamped;
+    }
+  }
   if (!continuity_ && !restored_) {
     const auto& comm = decomp_.comm();
     double sum = 0;

@@ -40,6 +40,7 @@ void Solver<D>::save_state(RestartState& s) const {
   h["particles_removed"] = removed;
   h["wall_contacts"] = contacts;
   h["particles_initial"] = initial_count_;
+  if (open_.active()) h["outflow_density_level"] = static_cast<double>(open_.density_level());
   if (initial_density_error_)
     h["initial_density_error"] = {{"max", initial_density_error_->max},
                                   {"local", initial_density_error_->local},
@@ -129,6 +130,9 @@ void Solver<D>::load_state(const RestartState& s, const std::string& file) {
   contacted_.clear();
   if (root)
     for (const std::int64_t id : int_array(s, "contacted_ids", -1, file)) contacted_.insert(id);
+  if (const auto it = s.header.find("outflow_density_level");
+      it != s.header.end() && it->is_number())
+    open_.set_density_level(static_cast<Real>(it->get<double>()));
   if (const auto it = s.header.find("initial_density_error");
       it != s.header.end() && it->is_object()) {
     InitialDensityError e;

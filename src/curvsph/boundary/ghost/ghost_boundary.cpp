@@ -5,6 +5,7 @@
 
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/boundary/wall_force.hpp"
+#include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/parallel.hpp"
 
 namespace curvsph {
@@ -22,6 +23,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     options_.support = W_.support;
     options_.cells = &fluid_cells_;
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
+    layer_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx), kWallLayer);
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
     difference_ = c.pressure_difference;
@@ -108,6 +110,10 @@ class GhostBoundary final : public BoundaryModel<D> {
   // Measured on the 3-D dam break with mirror ghosts at 0.55/15 before the free-slip images
   // of the continuity equation (dam_break_3d/findings.md, session 12): the front's corner
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
+  // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
+  // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
+  // and the contact layer, the wall force's law with d0 = dx/4, found through i's own ghost
+  // like the wall force.
   // Wall loads (wall_loads.hpp): the reaction of each ghost's pair term, on the ghost's wall,
   // at the midpoint of particle and ghost (the pressure term acts along the line through
   // both, so any point of it gives the same moment; the midpoint of a mirror pair is on the
@@ -122,6 +128,8 @@ class GhostBoundary final : public BoundaryModel<D> {
     const bool no_tension = no_tension_;
     const bool difference = difference_;
     const Vec<D> grav = F_.gravity;
+    const WallForce layer = layer_;
+    const Real c0 = F_.eos.c0;
     WallLoadSums<D>* loads = this->loads_;
     const auto react = [&](Index i, Index g, const Vec<D>& R, const VecD<D>& at) {
       // Images reflected more than once within one wall (a polygon's or a CAD solid's
@@ -164,6 +172,16 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
+        if (G_.reflections[g] == 1) {
+          // Impact pressure (wall_impact.hpp item 1) of i approaching this ghost's wall: the
+          // wall's normal velocity at the source's foot is the mean of the source's and its
+          // free-slip image's, u_w.n = (u_s + u_slip).n / 2. Corner ghosts take none: the
+          // single ghosts of each face carry that face's.
+          const Vec<D> n = G_.normal[g].template cast<Real>();
+          const Vec<D>& slip = G_.v_slip.empty() ? G_.v[g] : G_.v_slip[g];
+          pg += wall_impact_pressure(P.rho[i], c0,
+                                     Real(0.5) * (P.v[s] + slip).dot(n) - P.v[i].dot(n));
+        }
         Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
           gp = bg * ((pg - P.p[i]) * inv_sg2) * f * r;
@@ -179,8 +197,9 @@ class GhostBoundary final : public BoundaryModel<D> {
           react(i, g, Vec<D>(gp - mu * vs), (P.x[i] - Real(0.5) * r).template cast<double>());
         if (s == i && G_.reflections[g] == 1) {
           const Real d = static_cast<Real>(G_.source_depth[g]);
-          if (wf.active(d)) {
-            const Vec<D> pg_push = wf.magnitude(d) * G_.normal[g].template cast<Real>();
+          if (wf.active(d) || layer.active(d)) {
+            const Vec<D> pg_push =
+                (wf.magnitude(d) + layer.magnitude(d)) * G_.normal[g].template cast<Real>();
             push += pg_push;
             if (track) react(i, g, Vec<D>(-P.mass[i] * pg_push), G_.foot[g]);
           }
@@ -250,6 +269,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   const CellList<D>& fluid_cells_;
   GhostOptions<D> options_;
   WallForce wall_force_;      // range 0 (never active) unless boundary.wall_force
+  WallForce layer_;           // the contact layer (wall_impact.hpp item 2), always on
   bool hydrostatic_ = false;  // boundary.ghost_pressure: hydrostatic
   bool no_tension_ = false;   // boundary.wall_tension: false
   bool difference_ = false;   // pressure_gradient: difference

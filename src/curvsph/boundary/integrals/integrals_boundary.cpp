@@ -139,6 +139,10 @@
 // 8. Optional wall force (boundary.wall_force, boundary/wall_force.hpp): for a particle at
 //    distance d < d0 = 0.1 dx from a wall, a_i += (c0^2 / dx) (1 - d/d0)^2 n_w, from each wall
 //    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
+//
+// 9. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
+//    pressure rho_i c0 max((u_b - u_i).n_b, 0) added to p_b + p_i of every element a particle
+//    approaches, and the contact layer, item 8's law with d0 = dx/4.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -153,6 +157,7 @@
 
 #include "curvsph/boundary/integrals/periodic_clip.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
+#include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/geometry/moving_wall.hpp"
@@ -178,6 +183,7 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   no_tension_ = !c.boundary.wall_tension;
   dx_ = static_cast<Real>(c.dx);
   if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, dx_);
+  layer_ = WallForce(F_.eos.c0, dx_, kWallLayer);
 }
 
 template <int D>
@@ -462,7 +468,9 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real wa = q.w * ea_[b];
       // boundary.wall_tension: false: the wall only pushes (case_file.hpp).
       // pressure_gradient: difference (physics/pressure_gradient.hpp): (p_b - p_i).
-      const Real pb = difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i];
+      // Item 9: the impact pressure of i approaching the element.
+      const Real pb = (difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i]) +
+                      wall_impact_pressure(P.rho[i], F_.eos.c0, (eu_[b] - P.v[i]).dot(en_[b]));
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
@@ -489,18 +497,20 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
     if (track) add_loads(i, Vec<D>(-P.mass[i] * (P.a[i] - a_before)), P.x[i], *loads);
-    if (!wall_force_.active(wall_dist_[i])) return;
-    if (!track) {
-      P.a[i] += wall_force_push(walls_, P.x[i], wall_force_);
-      return;
+    for (const WallForce* law : {&layer_, &wall_force_}) {  // item 9 and item 8
+      if (!law->active(wall_dist_[i])) continue;
+      if (!track) {
+        P.a[i] += wall_force_push(walls_, P.x[i], *law);
+        continue;
+      }
+      Vec<D> push = Vec<D>::Zero();
+      wall_force_each(walls_, P.x[i], *law,
+                      [&](std::size_t k, const Vec<D>& p, const VecD<D>& foot) {
+                        push += p;
+                        loads->add(i, k, Vec<D>(-P.mass[i] * p), foot);
+                      });
+      P.a[i] += push;
     }
-    Vec<D> push = Vec<D>::Zero();
-    wall_force_each(walls_, P.x[i], wall_force_,
-                    [&](std::size_t k, const Vec<D>& p, const VecD<D>& foot) {
-                      push += p;
-                      loads->add(i, k, Vec<D>(-P.mass[i] * p), foot);
-                    });
-    P.a[i] += push;
   };
   if (loads)
     WallLoadSums<D>::for_blocks(static_cast<Index>(P.size()), true, body);

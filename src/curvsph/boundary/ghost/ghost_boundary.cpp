@@ -43,6 +43,37 @@ class GhostBoundary final : public BoundaryModel<D> {
   void prepare(const Particles<D>& P, Real /*t*/) override {
     G_.build(P.x, P.v, walls_, options_);
     cells_.build(G_.x);
+    // Each particle's own ghosts (ghosts are ordered by source): its speed towards each wall
+    // is taken along its own normal, so that flow along a curved wall has none (ghosts of
+    // neighbours carry the normal at their source's foot, tilted by the curvature).
+    own_begin_.assign(P.size(), 0);
+    own_end_.assign(P.size(), 0);
+    for (std::size_t g = G_.size(); g-- > 0;) {
+      const Index s = G_.source[g];
+      if (own_end_[s] == 0) own_end_[s] = static_cast<Index>(g + 1);
+      own_begin_[s] = static_cast<Index>(g);
+    }
+  }
+
+  // The speed at which particle i approaches the wall (face) of ghost g, (u_w - u_i).n along
+  // i's own normal to it: its own single ghost of the same wall whose normal is closest to
+  // the ghost's (the faces of a box share a wall index). The free-slip image of i reflects
+  // the normal velocity about the wall's, so u_w.n = (u_i + u_slip).n / 2.
+  Real approach(const Particles<D>& P, Index i, Index g) const {
+    Index best = -1;
+    double dot = -2;
+    for (Index q = own_begin_[i]; q < own_end_[i]; ++q) {
+      if (G_.reflections[q] != 1 || G_.wall[q] != G_.wall[g]) continue;
+      const double c = G_.normal[q].dot(G_.normal[g]);
+      if (c > dot) {
+        dot = c;
+        best = q;
+      }
+    }
+    if (best < 0) return 0;
+    const Vec<D> n = G_.normal[best].template cast<Real>();
+    const Vec<D>& slip = G_.v_slip.empty() ? G_.v[best] : G_.v_slip[best];
+    return Real(0.5) * (slip - P.v[i]).dot(n);
   }
 
   // Barker eq. 20: sigma_i += sum_g beta_g W_ig.
@@ -172,16 +203,9 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
-        if (G_.reflections[g] == 1) {
-          // Impact pressure (wall_impact.hpp item 1) of i approaching this ghost's wall: the
-          // wall's normal velocity at the source's foot is the mean of the source's and its
-          // free-slip image's, u_w.n = (u_s + u_slip).n / 2. Corner ghosts take none: the
-          // single ghosts of each face carry that face's.
-          const Vec<D> n = G_.normal[g].template cast<Real>();
-          const Vec<D>& slip = G_.v_slip.empty() ? G_.v[g] : G_.v_slip[g];
-          pg += wall_impact_pressure(P.rho[i], c0,
-                                     Real(0.5) * (P.v[s] + slip).dot(n) - P.v[i].dot(n));
-        }
+        // Impact pressure (wall_impact.hpp item 1) of i approaching this ghost's wall. Corner
+        // ghosts take none: the single ghosts of each face carry that face's.
+        if (G_.reflections[g] == 1) pg += wall_impact_pressure(P.rho[i], c0, approach(P, i, g));
         Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
           gp = bg * ((pg - P.p[i]) * inv_sg2) * f * r;
@@ -274,6 +298,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   bool no_tension_ = false;   // boundary.wall_tension: false
   bool difference_ = false;   // pressure_gradient: difference
   GhostSet<D> G_;
+  std::vector<Index> own_begin_, own_end_;  // each particle's own ghosts [begin, end)
   CellList<D> cells_;
 };
 

@@ -141,8 +141,9 @@
 //    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
 //
 // 9. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
-//    pressure rho_i c0 max((u_b - u_i).n_b, 0) added to p_b + p_i of every element a particle
-//    approaches, and the contact layer, item 8's law with d0 = dx/4.
+//    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of every element near a
+//    particle approaching its wall (n, u_w: the W A-weighted mean normal and velocity of those
+//    elements), and the contact layer, item 8's law with d0 = dx/4.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -462,19 +463,27 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     if (!near_[i]) return;
     const bool track = loads && i < loads->count();
     const Real mu = F_.viscosity[P.phase[i]];
-    Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
+    Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero(), uw = Vec<D>::Zero();
+    Real wsum = 0;
     for (const Pair& q : pairs_of(i)) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
       // boundary.wall_tension: false: the wall only pushes (case_file.hpp).
       // pressure_gradient: difference (physics/pressure_gradient.hpp): (p_b - p_i).
-      // Item 9: the impact pressure of i approaching the element.
-      const Real pb = (difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i]) +
-                      wall_impact_pressure(P.rho[i], F_.eos.c0, (eu_[b] - P.v[i]).dot(en_[b]));
+      const Real pb = difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i];
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
+      uw += wa * eu_[b];
+      wsum += wa;
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
+    // Item 9: the impact pressure of i approaching the wall, added to every element's p_b. Its
+    // speed is taken along the mean wall normal sum_b W A n (and against the mean wall
+    // velocity), not element by element: flow along a curved wall then has none (an element's
+    // normal is tilted by the curvature), and with it the force is dp sum_b W A n.
+    const Real wn_norm = wn.norm();
+    if (wn_norm > 0 && wsum > 0)
+      fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (uw / wsum - P.v[i]).dot(wn) / wn_norm) * wn;
     if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {
       // Item 2b: remove p_i times the discrete residual of the constant-field identity (item
       // 2d: only where p_i < 0).

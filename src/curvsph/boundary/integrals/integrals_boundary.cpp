@@ -141,9 +141,9 @@
 //    (each face of a tank) within d0. Particles at distance <= 0 are reported as penetrated.
 //
 // 9. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
-//    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of every element near a
-//    particle approaching its wall (n, u_w: the W A-weighted mean normal and velocity of those
-//    elements), and the contact layer, item 8's law with d0 = dx/4.
+//    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of the elements of a wall a
+//    particle approaches (n, u_w: the W A-weighted mean normal and velocity of the elements
+//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = dx/4.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -463,8 +463,15 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     if (!near_[i]) return;
     const bool track = loads && i < loads->count();
     const Real mu = F_.viscosity[P.phase[i]];
-    Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero(), uw = Vec<D>::Zero();
-    Real wsum = 0;
+    Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
+    struct Group {
+      std::int32_t wall = -1;
+      Vec<D> n0 = Vec<D>::Zero(), wn = Vec<D>::Zero(), uw = Vec<D>::Zero();
+      Real w = 0;
+    };
+    constexpr int kGroups = 6;
+    std::array<Group, kGroups> groups;
+    int ng = 0;
     for (const Pair& q : pairs_of(i)) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
@@ -473,17 +480,30 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real pb = difference ? p_wall_[b] - P.p[i] : p_wall_[b] + P.p[i];
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
-      uw += wa * eu_[b];
-      wsum += wa;
+      // Item 9's groups: the elements of one wall facing one way (a box's faces apart).
+      int k = 0;
+      while (k < ng && !(groups[k].wall == wall_of_[b] && groups[k].n0.dot(en_[b]) > Real(0.5)))
+        ++k;
+      if (k == ng && ng < kGroups) groups[ng++] = {wall_of_[b], en_[b]};
+      if (k < ng) {
+        groups[k].wn += wa * en_[b];
+        groups[k].uw += wa * eu_[b];
+        groups[k].w += wa;
+      }
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
-    // Item 9: the impact pressure of i approaching the wall, added to every element's p_b. Its
-    // speed is taken along the mean wall normal sum_b W A n (and against the mean wall
-    // velocity), not element by element: flow along a curved wall then has none (an element's
-    // normal is tilted by the curvature), and with it the force is dp sum_b W A n.
-    const Real wn_norm = wn.norm();
-    if (wn_norm > 0 && wsum > 0)
-      fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (uw / wsum - P.v[i]).dot(wn) / wn_norm) * wn;
+    // Item 9: the impact pressure of i approaching a wall, added to p_b of its elements. Its
+    // speed is taken along the mean normal sum_b W A n of the elements of one wall facing one
+    // way (and against their mean velocity), not element by element: flow along a curved wall
+    // then has none (an element's normal is tilted by the curvature); walls facing each other
+    // (a gap under a cylinder) or the faces of a corner each take their own.
+    for (int k = 0; k < ng; ++k) {
+      const Group& q = groups[static_cast<std::size_t>(k)];
+      const Real norm = q.wn.norm();
+      if (norm > 0 && q.w > 0)
+        fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (q.uw / q.w - P.v[i]).dot(q.wn) / norm) *
+              q.wn;
+    }
     if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {
       // Item 2b: remove p_i times the discrete residual of the constant-field identity (item
       // 2d: only where p_i < 0).

@@ -149,7 +149,9 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
         "integrals (geometric Shepard factor), with the case's own defaults: no wall force, "
         "free-surface defaults (README, \"Defaults\"). Regenerate with `build/curvsph validate "
         "free_surface`"
-     << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "") << ".\n\n"
+     << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "")
+     << ". Why particles reached the walls, and the wall terms that keep them off: "
+        "[findings.md](findings.md).\n\n"
      << table << "\n## Surge front of the dam break (Martin & Moyce 1952)\n\n"
      << "Front = the largest x of the particles on the floor, over the column width a, against "
         "`data/martin_moyce/front_a_2.25in.csv`, up to the far wall (x = 16 a).\n\n"

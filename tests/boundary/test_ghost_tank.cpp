@@ -36,30 +36,31 @@ TEST(GhostTank, HydrostaticGhostPressureKeepsTheTankAtRest) {
   const auto m = run(ghost_tank("hydrostatic"));
   EXPECT_GT(m["t_end_reached"].get<double>(), 19.99);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
-  // Measured: KE max 2.6e-7 M g H, pressure error 0.018 of rho0 g H (12 rows: the lattice's
-  // own discretisation error). With the no-slip image in the continuity equation as well, two
-  // particles cross a wall at t = 0.85 s; with `copy`, the corner particle at t = 0.11 s.
+  // Measured: KE max 1.5e-7 M g H (2.6e-7 before the walls' impact pressure and contact
+  // layer, boundary/wall_impact.hpp), pressure error 0.018 of rho0 g H (12 rows: the
+  // lattice's own discretisation error). Before those terms, with the no-slip image in the
+  // continuity equation as well, two particles crossed a wall at t = 0.85 s; with `copy`, the
+  // corner particle at t = 0.11 s.
   EXPECT_LT(m["kinetic_energy_max"].get<double>(), 2e-6);
   EXPECT_LT(m["pressure_l2_error"].get<double>(), 0.025);
 }
 
-TEST(GhostTank, CopiedPressureLetsTheCornerSink) {
+TEST(GhostTank, CopiedPressureLetsTheCornerSinkOntoTheContactLayer) {
   // The default for flows driven by a body force along a periodic axis (ghost_boundary.cpp):
-  // under gravity the first row's wall push is short by 2 rho g d. Without the wall contact
-  // and with boundary.penetration: stop the corner particle's crossing ends the run; by
-  // default it is stopped at 0.1 dx from the wall and counted, and nothing crosses.
+  // under gravity the first row's wall push is short by 2 rho g d, and the corner particle
+  // sinks. It used to cross the floor at t = 0.11 s; the walls' contact layer
+  // (boundary/wall_impact.hpp) now holds it at dx/4, without the stray-particle contact and
+  // with boundary.penetration: stop, and the tank moves an order of magnitude more than with
+  // the hydrostatic ghost pressure (measured: KE max 2.6e-6 M g H against 1.5e-7, pressure
+  // error 0.022 against 0.018).
   YAML::Node root = ghost_tank("copy");
   root["boundary"]["penetration"] = "stop";
   root["boundary"]["contact"] = 0;
-  EXPECT_THROW(run(root), InstabilityError);
-  root["boundary"]["penetration"] = "project";
-  root["boundary"].remove("contact");
-  root["time"]["end"] = 0.3;
   const auto m = run(root);
-  EXPECT_NEAR(m["time_reached"].get<double>(), 0.3, 1e-9);
-  EXPECT_GT(m["wall_contacts"].get<long>(), 0);
+  EXPECT_GT(m["t_end_reached"].get<double>(), 19.99);
   EXPECT_EQ(m["particles_projected"].get<long>(), 0);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
+  EXPECT_GT(m["kinetic_energy_max"].get<double>(), 1e-6);  // hydrostatic: 1.5e-7 (above)
 }
 
 TEST(GhostTank, HydrostaticGhostPressureIsTheDefaultUnderGravity) {

@@ -23,7 +23,8 @@ struct WallForce {
   Real range = 0;      // d0 = 0.1 dx
 
   WallForce() = default;
-  WallForce(Real c0, Real dx) : stiffness(c0 * c0 / dx), range(Real(0.1) * dx) {}
+  WallForce(Real c0, Real dx, Real fraction = Real(0.1))
+      : stiffness(c0 * c0 / dx), range(fraction * dx) {}
 
   bool active(Real d) const { return range > 0 && d < range; }
 

@@ -7,16 +7,15 @@
 //  - a particle that comes closer to a wall than boundary.contact (a fraction of dx, default
 //    0.1: Calderon et al.'s d0 of the wall force) is stopped there: put on that distance along
 //    the wall normal with its normal velocity towards the wall removed, and counted
-//    (wall_contacts). Neither boundary family stiffens as a particle nears the wall: with
-//    ghosts, a particle on the wall coincides with its own ghost and the rest of the image is
-//    the mirror of its neighbourhood, so the normal pressure force vanishes there by symmetry
-//    (only a compression of the whole near-wall layer pushes back); with boundary integrals
-//    the restoring stiffness below a free surface is C p_i/(rho0 h^2) with C = 1.44, 0.79,
-//    0.50 at h/dx = 2, 3, 4 (docs/validation/hydrostatic_tank/findings.md), and a particle in
-//    tension has none. An impact or a fast flow along a wall drives particles onto it, and
-//    without the contact they cross (column on a cylinder, mirror_beta, dx = 0.01: 996 of
-//    2400 particles put back from past a wall over 1.5 s). The contact is the kinematic
-//    condition u.n = u_w.n, applied at d0 rather than at the wall;
+//    (wall_contacts). A last resort since both boundary families keep particles off their
+//    walls themselves (boundary/wall_impact.hpp: the impact pressure of a particle
+//    approaching a wall and the contact layer within dx/4 of it). Before those terms
+//    neither family stiffened as a particle neared the wall, and 27-49 % of the particles of
+//    the free-surface cases reached this contact (column on a cylinder, mirror_beta,
+//    dx = 0.01: 821 of 2400; with the contact off 996 put back from past a wall over 1.5 s);
+//    with them none of the 2-D cases reaches it (docs/validation/free_surface/findings.md).
+//    The contact is the kinematic condition u.n = u_w.n, applied at d0 rather than at the
+//    wall;
 //  - a particle found past a wall (signed distance <= 0; with contact on, only one that
 //    crossed in a single step) is put back the same way and counted (particles_projected;
 //    boundary.penetration: project), or stops the run (penetration: stop);

@@ -132,7 +132,9 @@ StudyResult run_free_surface_study(const StudyContext& ctx) {
         "integrals (geometric Shepard factor), with the case's own defaults: no wall force, "
         "free-surface defaults (README, \"Defaults\"). Regenerate with `build/curvsph validate "
         "free_surface`"
-     << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "") << ".\n\n"
+     << (ctx.quick ? " (these figures: `--quick`, a tenth of each run's time)" : "")
+     << ". Why particles reached the walls, and the wall terms that keep them off: "
+        "[findings.md](findings.md).\n\n"
      << table
      << "\nThe dam break's surge front against Martin & Moyce (1952), resolved (a/40, a/80), "
         "and the far-wall run-up: [surge_front](../surge_front/README.md).\n\n"

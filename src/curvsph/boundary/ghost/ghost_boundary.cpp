@@ -5,6 +5,7 @@
 
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/boundary/wall_force.hpp"
+#include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/parallel.hpp"
 
 namespace curvsph {
@@ -22,6 +23,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     options_.support = W_.support;
     options_.cells = &fluid_cells_;
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
+    layer_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx), kWallLayer);
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
     difference_ = c.pressure_difference;
@@ -42,6 +44,37 @@ class GhostBoundary final : public BoundaryModel<D> {
   void prepare(const Particles<D>& P, Real /*t*/) override {
     G_.build(P.x, P.v, walls_, options_);
     cells_.build(G_.x);
+    // Each particle's own ghosts (ghosts are ordered by source): its speed towards each wall
+    // is taken along its own normal, so that flow along a curved wall has none (ghosts of
+    // neighbours carry the normal at their source's foot, tilted by the curvature).
+    own_begin_.assign(P.size(), 0);
+    own_end_.assign(P.size(), 0);
+    for (std::size_t g = G_.size(); g-- > 0;) {
+      const Index s = G_.source[g];
+      if (own_end_[s] == 0) own_end_[s] = static_cast<Index>(g + 1);
+      own_begin_[s] = static_cast<Index>(g);
+    }
+  }
+
+  // The speed at which particle i approaches the wall (face) of ghost g, (u_w - u_i).n along
+  // i's own normal to it: its own single ghost of the same wall whose normal is closest to
+  // the ghost's (the faces of a box share a wall index). The free-slip image of i reflects
+  // the normal velocity about the wall's, so u_w.n = (u_i + u_slip).n / 2.
+  Real approach(const Particles<D>& P, Index i, Index g) const {
+    Index best = -1;
+    double dot = -2;
+    for (Index q = own_begin_[i]; q < own_end_[i]; ++q) {
+      if (G_.reflections[q] != 1 || G_.wall[q] != G_.wall[g]) continue;
+      const double c = G_.normal[q].dot(G_.normal[g]);
+      if (c > dot) {
+        dot = c;
+        best = q;
+      }
+    }
+    if (best < 0) return 0;
+    const Vec<D> n = G_.normal[best].template cast<Real>();
+    const Vec<D>& slip = G_.v_slip.empty() ? G_.v[best] : G_.v_slip[best];
+    return Real(0.5) * (slip - P.v[i]).dot(n);
   }
 
   // Barker eq. 20: sigma_i += sum_g beta_g W_ig.
@@ -109,6 +142,10 @@ class GhostBoundary final : public BoundaryModel<D> {
   // Measured on the 3-D dam break with mirror ghosts at 0.55/15 before the free-slip images
   // of the continuity equation (dam_break_3d/findings.md, session 12): the front's corner
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
+  // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
+  // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
+  // and the contact layer, the wall force's law with d0 = dx/4, found through i's own ghost
+  // like the wall force.
   // Wall loads (wall_loads.hpp): the reaction of each ghost's pair term, on the ghost's wall,
   // at the midpoint of particle and ghost (the pressure term acts along the line through
   // both, so any point of it gives the same moment; the midpoint of a mirror pair is on the
@@ -123,6 +160,8 @@ class GhostBoundary final : public BoundaryModel<D> {
     const bool no_tension = no_tension_;
     const bool difference = difference_;
     const Vec<D> grav = F_.gravity;
+    const WallForce layer = layer_;
+    const Real c0 = F_.eos.c0;
     WallLoadSums<D>* loads = this->loads_;
     const auto react = [&](Index i, Index g, const Vec<D>& R, const VecD<D>& at) {
       // Images reflected more than once within one wall (a polygon's or a CAD solid's
@@ -168,6 +207,9 @@ class GhostBoundary final : public BoundaryModel<D> {
         const Real inv_sg2 = 1 / (sg * sg);
         Real pg = P.p[s];
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
+        // Impact pressure (wall_impact.hpp item 1) of i approaching this ghost's wall. Corner
+        // ghosts take none: the single ghosts of each face carry that face's.
+        if (G_.reflections[g] == 1) pg += wall_impact_pressure(P.rho[i], c0, approach(P, i, g));
         Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
           gp = bg * ((pg - P.p[i]) * inv_sg2) * f * r;
@@ -195,8 +237,9 @@ class GhostBoundary final : public BoundaryModel<D> {
                 (P.x[i] - Real(0.5) * r).template cast<double>());
         if (s == i && G_.reflections[g] == 1) {
           const Real d = static_cast<Real>(G_.source_depth[g]);
-          if (wf.active(d)) {
-            const Vec<D> pg_push = wf.magnitude(d) * G_.normal[g].template cast<Real>();
+          if (wf.active(d) || layer.active(d)) {
+            const Vec<D> pg_push =
+                (wf.magnitude(d) + layer.magnitude(d)) * G_.normal[g].template cast<Real>();
             push += pg_push;
             if (track) react(i, g, Vec<D>(-P.mass[i] * pg_push), G_.foot[g]);
           }
@@ -266,11 +309,13 @@ class GhostBoundary final : public BoundaryModel<D> {
   const CellList<D>& fluid_cells_;
   GhostOptions<D> options_;
   WallForce wall_force_;      // range 0 (never active) unless boundary.wall_force
+  WallForce layer_;           // the contact layer (wall_impact.hpp item 2), always on
   bool hydrostatic_ = false;  // boundary.ghost_pressure: hydrostatic
   bool no_tension_ = false;   // boundary.wall_tension: false
   bool difference_ = false;   // pressure_gradient: difference
   Real av_alpha_h_c0_ = 0;    // artificial_viscosity.alpha h c0 (0: off)
   GhostSet<D> G_;
+  std::vector<Index> own_begin_, own_end_;  // each particle's own ghosts [begin, end)
   CellList<D> cells_;
 };
 

@@ -169,6 +169,10 @@
 //      g.(x_b - x_i) W_ib A_b u_i.n_b: the work of a force that depends on x_i only (a
 //      potential below a flat floor), not on the acoustic field.
 //    The measured budgets are in docs/validation/cad_at_rest/integrals_findings.md.
+// 10. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
+//    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of the elements of a wall a
+//    particle approaches (n, u_w: the W A-weighted mean normal and velocity of the elements
+//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = dx/4.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -183,6 +187,7 @@
 
 #include "curvsph/boundary/integrals/periodic_clip.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
+#include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/geometry/moving_wall.hpp"
@@ -218,6 +223,7 @@ IntegralsBoundary<D>::IntegralsBoundary(const BoundaryContext<D>& ctx)
   }
   dx_ = static_cast<Real>(c.dx);
   if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, dx_);
+  layer_ = WallForce(F_.eos.c0, dx_, kWallLayer);
 }
 
 template <int D>
@@ -515,6 +521,14 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     const bool track = loads && i < loads->count();
     const Real mu = F_.viscosity[P.phase[i]];
     Vec<D> fp = Vec<D>::Zero(), fv = Vec<D>::Zero(), wn = Vec<D>::Zero();
+    struct Group {
+      std::int32_t wall = -1;
+      Vec<D> n0 = Vec<D>::Zero(), wn = Vec<D>::Zero(), uw = Vec<D>::Zero();
+      Real w = 0;
+    };
+    constexpr int kGroups = 6;
+    std::array<Group, kGroups> groups;
+    int ng = 0;
     for (const Pair& q : pairs_of(i)) {
       const Index b = q.b;
       const Real wa = q.w * ea_[b];
@@ -526,7 +540,29 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real pb = difference ? pw - P.p[i] : pw + P.p[i];
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
+      // Item 9's groups: the elements of one wall facing one way (a box's faces apart).
+      int k = 0;
+      while (k < ng && !(groups[k].wall == wall_of_[b] && groups[k].n0.dot(en_[b]) > Real(0.5)))
+        ++k;
+      if (k == ng && ng < kGroups) groups[ng++] = {wall_of_[b], en_[b]};
+      if (k < ng) {
+        groups[k].wn += wa * en_[b];
+        groups[k].uw += wa * eu_[b];
+        groups[k].w += wa;
+      }
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
+    }
+    // Item 9: the impact pressure of i approaching a wall, added to p_b of its elements. Its
+    // speed is taken along the mean normal sum_b W A n of the elements of one wall facing one
+    // way (and against their mean velocity), not element by element: flow along a curved wall
+    // then has none (an element's normal is tilted by the curvature); walls facing each other
+    // (a gap under a cylinder) or the faces of a corner each take their own.
+    for (int k = 0; k < ng; ++k) {
+      const Group& q = groups[static_cast<std::size_t>(k)];
+      const Real norm = q.wn.norm();
+      if (norm > 0 && q.w > 0)
+        fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (q.uw / q.w - P.v[i]).dot(q.wn) / norm) *
+              q.wn;
     }
     if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {
       // Item 2b: remove p_i times the discrete residual of the constant-field identity (item
@@ -550,18 +586,20 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
     if (track) add_loads(i, Vec<D>(-P.mass[i] * (P.a[i] - a_before)), P.x[i], *loads);
-    if (!wall_force_.active(wall_dist_[i])) return;
-    if (!track) {
-      P.a[i] += wall_force_push(walls_, P.x[i], wall_force_);
-      return;
+    for (const WallForce* law : {&layer_, &wall_force_}) {  // item 9 and item 8
+      if (!law->active(wall_dist_[i])) continue;
+      if (!track) {
+        P.a[i] += wall_force_push(walls_, P.x[i], *law);
+        continue;
+      }
+      Vec<D> push = Vec<D>::Zero();
+      wall_force_each(walls_, P.x[i], *law,
+                      [&](std::size_t k, const Vec<D>& p, const VecD<D>& foot) {
+                        push += p;
+                        loads->add(i, k, Vec<D>(-P.mass[i] * p), foot);
+                      });
+      P.a[i] += push;
     }
-    Vec<D> push = Vec<D>::Zero();
-    wall_force_each(walls_, P.x[i], wall_force_,
-                    [&](std::size_t k, const Vec<D>& p, const VecD<D>& foot) {
-                      push += p;
-                      loads->add(i, k, Vec<D>(-P.mass[i] * p), foot);
-                    });
-    P.a[i] += push;
   };
   if (loads)
     WallLoadSums<D>::for_blocks(static_cast<Index>(P.size()), true, body);

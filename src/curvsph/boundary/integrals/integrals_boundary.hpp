@@ -84,6 +84,7 @@ class IntegralsBoundary final : public BoundaryModel<D> {
   GeometricShepard<D> geometric_;  // element quadrature tabulated once (geometric mode)
   ElementQuadrature<D> wq_;        // Gauss points of the wall terms' W_ib
   WallForce wall_force_;           // range 0 (never active) unless boundary.wall_force
+  WallForce layer_;                // the contact layer (wall_impact.hpp item 2), always on
   bool consistent_ = false;        // boundary.pressure: consistent
   bool tensile_ = false;           // boundary.pressure: tensile_control (consistent where p_i < 0)
   bool no_tension_ = false;        // boundary.wall_tension: false

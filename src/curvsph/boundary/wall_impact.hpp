@@ -1,0 +1,59 @@
+#pragma once
+// The two wall terms that keep fluid particles off a wall in both boundary families (ghosts
+// and boundary integrals), measured in docs/validation/free_surface/findings.md.
+//
+// Why they are needed. Neither family stiffens as a particle nears its wall. With ghosts the
+// particle's own ghost sits at 2d and grad W(2d) -> 0 as d -> 0; for a uniform pressure p the
+// fluid and image sums cancel on the wall plane, so the normal force on a first-row particle
+// pushed from d = dx/2 towards the wall rises to 2 p (0.020/dx) / rho at d = 0.2 dx and falls
+// linearly to 0 at the wall (lattice sum, h = 2 dx): an energy barrier of 0.013 p/rho, which a
+// particle with 0.16 m/s into the wall crosses at p = 1 kPa. With boundary integrals the
+// continuity equation does not compress a particle that moves towards the wall (the fluid and
+// wall parts of div u cancel, integrals_boundary.cpp item 2b) and the restoring stiffness is
+// of order p_i/(rho h^2). Free-surface flows (dam break, column on a cylinder) cross the
+// walls with 0.1-0.3 m/s (median) of normal velocity at p of a few hundred Pa, or in tension.
+//
+// 1. Impact pressure (velocity). The wall pressure a particle sees is the solution of the
+//    Riemann problem between the particle and its mirror image across the wall (normal
+//    velocity reflected about the wall's), as in the wall condition of Zhang, Hu & Adams
+//    (2017, "A weakly compressible SPH method based on a low-dissipation Riemann solver",
+//    J. Comput. Phys. 335, 605-620). Its linearised (acoustic) solution, p* = (p_L + p_R)/2 +
+//    rho c0 (U_L - U_R)/2 with U_R = 2 u_w.n - U_L (Toro, Riemann Solvers and Numerical
+//    Methods for Fluid Dynamics, the linearised solver), is p* = p + rho c0 u_a, u_a = (u_w -
+//    u_i).n the speed at which the particle approaches the wall (n into the fluid): the
+//    water-hammer pressure of a rigid wall. It is added to the wall pressure of every wall pair of
+//    the particle (ghosts: p_g; integrals: p_b), for approach only (u_a > 0: a wall that resists
+//    compression, never one that sucks a receding particle back), and without Zhang et al.'s
+//    low-dissipation limiter (beta = c0). Near the wall it acts as a normal damper of rate ~0.33
+//    c0/dx (2-D, h = 2 dx: sum_b W A n ~ 0.33/dx at the wall), about 0.17 per time step at cfl
+//    0.25: stable, and zero in any flow that slides along its walls. The approach speed is
+//    the particle's own, along its own normal to the wall (ghosts: its own ghost of that wall
+//    or face; integrals: the W A-weighted mean normal and velocity of the elements near it),
+//    so that flow along a curved wall has none. Taken along the normal of each neighbour's
+//    image instead (tilted by the curvature, one-sided), it dragged the Couette annulus
+//    (c0 = 0.25 m/s): velocity error 0.085 at t = 0.3 s against < 0.05.
+// 2. Contact layer (position). A particle closer than d0 = dx/4 to a wall is pushed off it
+//    with Calderon-Sanchez et al.'s wall force law (§3.2, boundary/wall_force.hpp),
+//    a = (c0^2/dx) (1 - d/d0)^2 n, with d0 = dx/4 (the depth at which a particle found past a
+//    wall is put back, solver/stray_particles.hpp) instead of their 0.1 dx, so that a particle
+//    stops before the stray-particle contact at 0.1 dx. The first particle row sits at dx/2 and
+//    never feels it; its energy barrier c0^2/12 is crossed at c0/sqrt(6) = 0.41 c0 (11-14 m/s
+//    in the free-surface cases, whose largest speed is about 3.4 m/s). It holds what the impact
+//    pressure cannot: a slow approach (a thin layer sinking onto the floor at a few mm/s) and
+//    particles in tension pulled by the wall's pair terms at contact lines.
+#include <algorithm>
+
+#include "curvsph/core/types.hpp"
+
+namespace curvsph {
+
+// d0 of the contact layer (item 2), in dx.
+inline constexpr Real kWallLayer = Real(0.25);
+
+// Item 1: the pressure added to a wall pair of a particle of density rho approaching the wall
+// at speed `approach` = (u_w - u_i).n (n into the fluid).
+inline Real wall_impact_pressure(Real rho, Real c0, Real approach) {
+  return rho * c0 * std::max(approach, Real(0));
+}
+
+}  // namespace curvsph

@@ -9,7 +9,7 @@
 //    the wall normal with its normal velocity towards the wall removed, and counted
 //    (wall_contacts). A last resort since both boundary families keep particles off their
 //    walls themselves (boundary/wall_impact.hpp: the impact pressure of a particle
-//    approaching a wall and the contact layer within dx/4 of it). Before those terms
+//    approaching a wall and the contact layer within 0.1 dx of it). Before those terms
 //    neither family stiffened as a particle neared the wall, and 27-49 % of the particles of
 //    the free-surface cases reached this contact (column on a cylinder, mirror_beta,
 //    dx = 0.01: 821 of 2400; with the contact off 996 put back from past a wall over 1.5 s);

@@ -144,7 +144,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
   // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
   // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
-  // and the contact layer, the wall force's law with d0 = dx/4, found through i's own ghost
+  // and the contact layer, the wall force's law with d0 = kWallLayer dx, found through i's own ghost
   // like the wall force.
   // Wall loads (wall_loads.hpp): the reaction of each ghost's pair term, on the ghost's wall,
   // at the midpoint of particle and ghost (the pressure term acts along the line through

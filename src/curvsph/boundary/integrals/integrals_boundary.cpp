@@ -172,7 +172,7 @@
 // 10. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
 //    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of the elements of a wall a
 //    particle approaches (n, u_w: the W A-weighted mean normal and velocity of the elements
-//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = dx/4.
+//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = kWallLayer dx.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -658,7 +658,8 @@ void IntegralsBoundary<D>::add_loads(Index i, const Vec<D>& R, const Vec<D>& xi,
   if (m <= D) {
     Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Identity();
     Eigen::Matrix<double, D, 1> rhs = Eigen::Matrix<double, D, 1>::Zero();
-    std::array<VecD<D>, kMax> unit{};
+    std::array<VecD<D>, kMax> unit;
+    unit.fill(VecD<D>::Zero());  // Eigen's default constructor leaves them unset
     bool ok = true;
     for (int s = 0; s < m && ok; ++s) {
       const double len = normal[static_cast<std::size_t>(s)].norm();

@@ -4,24 +4,24 @@
 namespace curvsph {
 
 StudyResult run_taylor_green_study(const StudyContext& ctx);
-StudyResult run_shepard_approach_study(const StudyContext& ctx);  // shepard_approach_study.cpp
-StudyResult run_couette_study(const StudyContext& ctx);           // couette_study.cpp
-StudyResult run_poiseuille_study(const StudyContext& ctx);        // poiseuille_study.cpp
-StudyResult run_node_density_study(const StudyContext& ctx);      // node_density_study.cpp
-StudyResult run_ghost_cost_study(const StudyContext& ctx);        // ghost_cost_study.cpp
-StudyResult run_cylinder_lattice_study(const StudyContext& ctx);  // cylinder_lattice_study.cpp
-StudyResult run_throttled_pipe_study(const StudyContext& ctx);    // throttled_pipe_study.cpp
-StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);  // hydrostatic_tank_study.cpp
-StudyResult run_dam_break_study(const StudyContext& ctx);         // dam_break_study.cpp
-StudyResult run_shepard_cost_study(const StudyContext& ctx);      // shepard_cost_study.cpp
-StudyResult run_scaling_study(const StudyContext& ctx);           // scaling_study.cpp
-StudyResult run_droplet_wall_study(const StudyContext& ctx);      // droplet_wall_study.cpp
-StudyResult run_throughput_study(const StudyContext& ctx);        // throughput_study.cpp
-StudyResult run_free_surface_study(const StudyContext& ctx);      // free_surface_study.cpp
-StudyResult run_moving_cylinder_study(const StudyContext& ctx);   // moving_cylinder_study.cpp
-StudyResult run_cad_at_rest_study(const StudyContext& ctx);       // cad_at_rest_study.cpp
+StudyResult run_shepard_approach_study(const StudyContext& ctx);    // shepard_approach_study.cpp
+StudyResult run_couette_study(const StudyContext& ctx);             // couette_study.cpp
+StudyResult run_poiseuille_study(const StudyContext& ctx);          // poiseuille_study.cpp
+StudyResult run_node_density_study(const StudyContext& ctx);        // node_density_study.cpp
+StudyResult run_ghost_cost_study(const StudyContext& ctx);          // ghost_cost_study.cpp
+StudyResult run_cylinder_lattice_study(const StudyContext& ctx);    // cylinder_lattice_study.cpp
+StudyResult run_throttled_pipe_study(const StudyContext& ctx);      // throttled_pipe_study.cpp
+StudyResult run_hydrostatic_tank_study(const StudyContext& ctx);    // hydrostatic_tank_study.cpp
+StudyResult run_dam_break_study(const StudyContext& ctx);           // dam_break_study.cpp
+StudyResult run_shepard_cost_study(const StudyContext& ctx);        // shepard_cost_study.cpp
+StudyResult run_scaling_study(const StudyContext& ctx);             // scaling_study.cpp
+StudyResult run_droplet_wall_study(const StudyContext& ctx);        // droplet_wall_study.cpp
+StudyResult run_throughput_study(const StudyContext& ctx);          // throughput_study.cpp
+StudyResult run_free_surface_study(const StudyContext& ctx);        // free_surface_study.cpp
+StudyResult run_moving_cylinder_study(const StudyContext& ctx);     // moving_cylinder_study.cpp
+StudyResult run_cad_at_rest_study(const StudyContext& ctx);         // cad_at_rest_study.cpp
 StudyResult run_cylinder_benchmark_study(const StudyContext& ctx);  // cylinder_benchmark_study.cpp
-StudyResult run_surge_front_study(const StudyContext& ctx);       // surge_front_study.cpp
+StudyResult run_surge_front_study(const StudyContext& ctx);         // surge_front_study.cpp
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {

@@ -244,7 +244,8 @@ StudyResult run_surge_front_study(const StudyContext& ctx) {
                        "largest abs(Z(a/20) - Z(a/40)) / Z(a/40) at the experiment's times", true});
   if (!ctx.quick)
     r.summary.push_back({"surge_front.resolution_change_a40_a80", c40_80, "reported",
-                         "largest abs(Z(a/40) - Z(a/80)) / Z(a/80) at the experiment's times", true});
+                         "largest abs(Z(a/40) - Z(a/80)) / Z(a/80) at the experiment's times",
+                         true});
   r.summary.push_back({"surge_front.experiments.mm_1.125in_vs_2.25in", spread_small, "reported",
                        "Martin & Moyce's two column sizes, max rel. difference (T <= 5.3)", true});
   r.summary.push_back({"surge_front.experiments.koshizuka_oka_vs_mm_2.25in", spread_ko, "reported",

@@ -144,12 +144,11 @@ class GhostBoundary final : public BoundaryModel<D> {
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
   // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
   // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
-  // and the contact layer, the wall force's law with d0 = kWallLayer dx, found through i's own ghost
-  // like the wall force.
-  // Wall loads (wall_loads.hpp): the reaction of each ghost's pair term, on the ghost's wall,
-  // at the midpoint of particle and ghost (the pressure term acts along the line through
-  // both, so any point of it gives the same moment; the midpoint of a mirror pair is on the
-  // wall). A corner ghost's reaction is split between the faces it was reflected across, the
+  // and the contact layer, the wall force's law with d0 = kWallLayer dx, found through i's own
+  // ghost like the wall force. Wall loads (wall_loads.hpp): the reaction of each ghost's pair term,
+  // on the ghost's wall, at the midpoint of particle and ghost (the pressure term acts along the
+  // line through both, so any point of it gives the same moment; the midpoint of a mirror pair is
+  // on the wall). A corner ghost's reaction is split between the faces it was reflected across, the
   // component along each face's normal to that face (the faces are mutually perpendicular),
   // what is left (3-D, along the edge of two faces) to the last one. The wall force's
   // reaction acts at the foot point.

@@ -172,7 +172,8 @@
 // 10. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
 //    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of the elements of a wall a
 //    particle approaches (n, u_w: the W A-weighted mean normal and velocity of the elements
-//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = kWallLayer dx.
+//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = kWallLayer
+//    dx.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>

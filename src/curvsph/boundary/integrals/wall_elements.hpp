@@ -43,12 +43,13 @@
 //                centroid, area = int |S_u x S_v| over each (collapsed Gauss-Legendre 8 x 8);
 //                a cell that the face covers whole and on which the surface is flat and
 //                affine (a plane face's border cells: the loop runs along its sides) stays
-//                one patch, so a CAD box has the `box` wall's elements. Faces sharing an edge share its samples (edge parameter): they meet vertex
-//                to vertex. A cell that a hole's loop crosses, or whose part is not
-//                star-shaped: the loop's chain closed along the cell's side, ear-clipped. A
-//                cell crossed by several loops or twice is split in four, three times, then
-//                kept or dropped by its centre. A point on a curved rim between two samples lies
-//                outside the elements by the chord's sagitta, (dx / 4)^2 / (8 R)
+//                one patch, so a CAD box has the `box` wall's elements. Faces sharing an edge share
+//                its samples (edge parameter): they meet vertex to vertex. A cell that a hole's
+//                loop crosses, or whose part is not star-shaped: the loop's chain closed along the
+//                cell's side, ear-clipped. A cell crossed by several loops or twice is split in
+//                four, three times, then kept or dropped by its centre. A point on a curved rim
+//                between two samples lies outside the elements by the chord's sagitta, (dx / 4)^2 /
+//                (8 R)
 //  Curved patches: vertices on the surface (planar, by symmetry, on the analytic surfaces:
 //  rectangles or isosceles trapezoids; a NURBS cell's four corners need not be coplanar),
 //  centre = the surface point at the middle of the parameter cell, normal = the surface

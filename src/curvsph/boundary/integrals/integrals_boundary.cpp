@@ -541,7 +541,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real pb = difference ? pw - P.p[i] : pw + P.p[i];
       fp += (no_tension_ && !difference ? std::max(pb, Real(0)) : pb) * wa * en_[b];
       wn += wa * en_[b];
-      // Item 9's groups: the elements of one wall facing one way (a box's faces apart).
+      // Item 10's groups: the elements of one wall facing one way (a box's faces apart).
       int k = 0;
       while (k < ng && !(groups[k].wall == wall_of_[b] && groups[k].n0.dot(en_[b]) > Real(0.5)))
         ++k;
@@ -553,7 +553,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       }
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
-    // Item 9: the impact pressure of i approaching a wall, added to p_b of its elements. Its
+    // Item 10: the impact pressure of i approaching a wall, added to p_b of its elements. Its
     // speed is taken along the mean normal sum_b W A n of the elements of one wall facing one
     // way (and against their mean velocity), not element by element: flow along a curved wall
     // then has none (an element's normal is tilted by the curvature); walls facing each other
@@ -587,7 +587,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     }
     P.a[i] += inv_g / P.rho[i] * (fp - 2 * mu * fv);
     if (track) add_loads(i, Vec<D>(-P.mass[i] * (P.a[i] - a_before)), P.x[i], *loads);
-    for (const WallForce* law : {&layer_, &wall_force_}) {  // item 9 and item 8
+    for (const WallForce* law : {&layer_, &wall_force_}) {  // item 10 and item 8
       if (!law->active(wall_dist_[i])) continue;
       if (!track) {
         P.a[i] += wall_force_push(walls_, P.x[i], *law);

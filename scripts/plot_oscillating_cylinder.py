@@ -48,12 +48,13 @@ def main():
     for k, (name, (t, f)) in enumerate(runs.items()):
         t, f = np.array(t), np.array(f)
         top.plot(t / period, f, lw=0.6, color=f"C{k}", label=name)
-        last = t >= t_end - period - 1e-9
+        run_end = round(t[-1] / period) * period  # runs differ in length
+        last = t >= run_end - period - 1e-9
         width = max(1, int(round(last.sum() / 40)))
         smooth = np.convolve(f, np.ones(width) / width, mode="same")
-        phase = (t[last] - (t_end - period)) / period
+        phase = (t[last] - (run_end - period)) / period
         bottom.plot(phase, f[last], lw=0.4, color=f"C{k}", alpha=0.5)
-        bottom.plot(phase, smooth[last], lw=1.5, color=f"C{k}", label=f"{name}, last period")
+        bottom.plot(phase, smooth[last], lw=1.5, color=f"C{k}", label=f"{name}, period {int(round(run_end / period))}")
     bottom.plot(rt, rf, "k--", lw=1.2, label="Morison, C_d = 2.09, C_i = 1.45")
     if dig:
         bottom.plot([float(r["t_over_T"]) for r in dig], [float(r["f_over_rho_u2_d"]) for r in dig],

@@ -9,8 +9,8 @@
 // (b) cases/oscillating_cylinder.yaml (Dütsch et al. 1998, Re = 100, KC = 5) over its first
 // periods: the in-line force, its first harmonic (amplitude, phase against the cylinder's
 // velocity) and the Morison fit F = -C_d rho D |u| u / 2 - C_a rho (pi D^2 / 4) du/dt with the
-// cylinder's velocity u (fluid at rest: no Froude-Krylov part). The paper's force curve is not
-// available here, so these figures are reported without a target.
+// cylinder's velocity u (fluid at rest: no Froude-Krylov part), reported without a target: the
+// comparison with the paper's force is `validate oscillating_cylinder`'s (a 20 D box).
 #include <fmt/format.h>
 #include <omp.h>
 #include <yaml-cpp/yaml.h>
@@ -203,8 +203,8 @@ StudyResult run_moving_cylinder_study(const StudyContext& ctx) {
               "the cylinder's velocity.\n\n",
               D / c.dx, periods, h.particles, h.steps, h.projected, from, coef(0), coef(1), amp,
               phase)
-       << "Dütsch et al. (1998) give the in-line force over a period as a figure; their "
-          "numbers were not available to this study, so no comparison is made here.\n\n"
+       << "The comparison with Dütsch et al.'s (1998) in-line force is `curvsph validate "
+          "oscillating_cylinder` (docs/validation/oscillating_cylinder/, a 20 D box).\n\n"
        << "![in-line force](oscillating.png)\n";
   }
   run_plot_script(ctx, "plot_moving_cylinder.py", {ctx.out_dir.string()});

@@ -22,6 +22,8 @@ StudyResult run_moving_cylinder_study(const StudyContext& ctx);     // moving_cy
 StudyResult run_cad_at_rest_study(const StudyContext& ctx);         // cad_at_rest_study.cpp
 StudyResult run_cylinder_benchmark_study(const StudyContext& ctx);  // cylinder_benchmark_study.cpp
 StudyResult run_surge_front_study(const StudyContext& ctx);         // surge_front_study.cpp
+// oscillating_cylinder_study.cpp
+StudyResult run_oscillating_cylinder_study(const StudyContext& ctx);
 
 const std::vector<Study>& validation_studies() {
   static const std::vector<Study> studies = {
@@ -72,6 +74,9 @@ const std::vector<Study>& validation_studies() {
       {"cylinder_benchmark",
        "Schäfer & Turek (1996) cylinder in a channel, Re = 20: C_D, C_L, dp vs D/dx (issue 33)",
        &run_cylinder_benchmark_study},
+      {"oscillating_cylinder",
+       "Dütsch et al. (1998) in-line oscillating cylinder, Re = 100, KC = 5: in-line force",
+       &run_oscillating_cylinder_study},
   };
   return studies;
 }

@@ -11,8 +11,10 @@
 //   the fluid in every pair sum but are not integrated as fluid: their state is prescribed.
 // - Inflow buffer: velocity prescribed (uniform or parabolic, ramped over `ramp` seconds),
 //   moving along the normal; density (hence pressure) extrapolated from the fluid at zeroth
-//   order, a Shepard average over the fluid neighbours (Tafuni et al. §3.2 use a first-order
-//   extrapolation at a mirror point; the zeroth order is their "do nothing" pressure).
+//   order, a Shepard average over the fluid around the mirror point x - 2 d n (Tafuni et al.
+//   §3.2 extrapolate at that point to first order; the zeroth order is their "do nothing"
+//   pressure), so that the deepest layer, which has no fluid neighbours, takes the fluid's
+//   level too.
 //   A buffer particle that crosses the boundary (d >= 0) becomes fluid, and a copy of it
 //   enters the buffer at its back, x - L n (the buffer is periodic along the normal).
 // - Outflow buffer: a fluid particle that crosses the boundary (d < 0) becomes a buffer
@@ -20,7 +22,13 @@
 //   pressure (see density_level below), its velocity the Shepard average of the fluid around
 //   its mirror point x - 2 d n (Tafuni et al. 2018 §3.2 extrapolate at that point; kept once
 //   the fluid there is gone); it is deleted when it leaves the buffer's back (d < -L). One that
-//   drifts back (d >= 0) becomes fluid again and is taken off the outflow count.
+//   drifts back (d >= 0) becomes fluid again and is taken off the outflow count, and a copy
+//   of it enters at the buffer's back, x - L n, as at an inflow, unless a particle of the
+//   buffer lies within dx/2 of that place (the buffer is bidirectional: under a backflow it
+//   stays full, under jitter across the boundary it does not overfill; SPHinXsys'
+//   bidirectional buffers follow the same idea). The copy's id is id + K as at an inflow
+//   (number_from); a particle that returns twice while its first copy is still in the buffer
+//   repeats that id.
 // - Density level (density.method summation). The density sum of a particle arrangement at
 //   rest is not its set-up density: on a square lattice with h = 1.3 dx the Wendland C2 sum
 //   sum_j W(|x_i - x_j|) dx^2 is 1.0105 (the discrete kernel sum departs from its integral,
@@ -145,6 +153,7 @@ class OpenBoundaries {
   // Scratch.
   std::vector<std::size_t> keep_;
   std::vector<Index> spawn_;
+  std::vector<std::size_t> returned_;  // returned from an outflow buffer this step
   std::vector<std::byte> bytes_;
   struct Held {
     Index i;

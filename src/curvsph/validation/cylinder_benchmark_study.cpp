@@ -123,9 +123,9 @@ StudyResult run_cylinder_benchmark_study(const StudyContext& ctx) {
             {20, 10, "integrals", 8, 4, 0.005},
             {20, 14, "mirror_beta", 8, 4, 0.02},
             {20, 14, "integrals", 8, 4, 0.02}};
-    // 2D-2 is not in this list: cases/cylinder_channel_re100.yaml goes unstable at t = 0.17 s
-    // (the README's notes), and at D/dx = 10 a run to t = 12 s is 7.7e8 particle-steps; once
-    // it runs, add {100, 10, "mirror_beta", 12, 4, 0.01}.
+    // 2D-2 is not in this list: cases/cylinder_channel_re100.yaml runs (to t = 6 s at D/dx =
+    // 10, the README's notes) but sheds no vortices by then, and a run to t = 12 s is 7.7e8
+    // particle-steps; to add it: {100, 10, "mirror_beta", 12, 4, 0.01}.
   }
   StudyResult r;
   std::ofstream conv(ctx.out_dir / "convergence.csv");

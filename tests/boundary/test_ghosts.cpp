@@ -136,7 +136,9 @@ TEST(GhostSet, BoxCorner3DAndPlanesMeeting) {
       }
 
   // Two plane walls meeting at a right angle (2-D): the same three ghosts; a third plane at
-  // 45 degrees gets single reflections only.
+  // 45 degrees to the first adds its single ghost only: their lines meet at (0, -0.2), behind
+  // the second plane, and its 135 degree corner with the second cuts no single of this point
+  // (flat_corners.hpp; test_flat_corners.cpp).
   WallSet<2> planes;
   planes.add(std::make_shared<PlaneWall<2>>(Vec2d(0, 0), Vec2d(1, 0)));
   planes.add(std::make_shared<PlaneWall<2>>(Vec2d(0, 0), Vec2d(0, 1)));

@@ -10,7 +10,8 @@ namespace curvsph {
 
 namespace {
 
-// Whether the face of box [lo, hi] across `axis` at side `s` (0: lo, 1: hi) is free.
+// Whether the face of box [lo, hi] across `axis` at side `s` (0: lo, 1: hi) is free: some
+// sample point of it is wet (the fill's lattice columns end at that part of the face).
 template <int D>
 bool free_face(const VecD<D>& lo, const VecD<D>& hi, int axis, int s, const WallSet<D>& walls,
                double dx) {
@@ -20,7 +21,6 @@ bool free_face(const VecD<D>& lo, const VecD<D>& hi, int axis, int s, const Wall
     n[d] = d == axis ? 1 : std::clamp(static_cast<int>(std::ceil((hi[d] - lo[d]) / dx)), 1, 64);
   long total = 1;
   for (int d = 0; d < D; ++d) total *= n[d];
-  long inside = 0;
   for (long k = 0; k < total; ++k) {
     VecD<D> p;
     long r = k;
@@ -32,9 +32,9 @@ bool free_face(const VecD<D>& lo, const VecD<D>& hi, int axis, int s, const Wall
     bool wet = true;
     for (std::size_t w = 0; w < walls.size() && wet; ++w)
       wet = walls[w].closest(p).distance > clearance;
-    inside += wet;
+    if (wet) return true;
   }
-  return 2 * inside >= total;
+  return false;
 }
 
 }  // namespace

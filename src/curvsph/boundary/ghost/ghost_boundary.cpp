@@ -1,5 +1,6 @@
 #include "curvsph/boundary/ghost/ghost_boundary.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 
@@ -149,7 +150,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   // on the ghost's wall, at the midpoint of particle and ghost (the pressure term acts along the
   // line through both, so any point of it gives the same moment; the midpoint of a mirror pair is
   // on the wall). A corner ghost's reaction is split between the faces it was reflected across, the
-  // component along each face's normal to that face (the faces are mutually perpendicular),
+  // component along each face's normal to that face (R decomposed on the faces' normals),
   // what is left (3-D, along the edge of two faces) to the last one. The wall force's
   // reaction acts at the foot point.
   void add_accelerations(Particles<D>& P) override {
@@ -175,11 +176,22 @@ class GhostBoundary final : public BoundaryModel<D> {
         loads->add(i, static_cast<std::size_t>(G_.wall[g]), R, at);
         return;
       }
-      Vec<D> rest = R;
-      const int nr = G_.reflections[g];
+      // R = sum_r a_r n_r + rest, the a_r from the Gram system of the faces' normals (the
+      // projections on each normal where they are perpendicular); rest (3-D: along the edge
+      // of two faces) goes to the last face.
+      const int nr = c->faces;
+      Eigen::Matrix3d gram = Eigen::Matrix3d::Identity();
+      Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
       for (int r = 0; r < nr; ++r) {
-        const Vec<D> n = c->normal[static_cast<std::size_t>(r)].template cast<Real>();
-        const Vec<D> part = R.dot(n) * n;
+        const VecD<D>& nr_ = c->normal[static_cast<std::size_t>(r)];
+        rhs[r] = nr_.dot(R.template cast<double>());
+        for (int q = 0; q < nr; ++q) gram(r, q) = nr_.dot(c->normal[static_cast<std::size_t>(q)]);
+      }
+      const Eigen::Vector3d a = gram.partialPivLu().solve(rhs);
+      Vec<D> rest = R;
+      for (int r = 0; r < nr; ++r) {
+        const Vec<D> part =
+            static_cast<Real>(a[r]) * c->normal[static_cast<std::size_t>(r)].template cast<Real>();
         rest -= part;
         loads->add(i, static_cast<std::size_t>(c->wall[static_cast<std::size_t>(r)]),
                    r + 1 < nr ? part : Vec<D>(part + rest), at);

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "curvsph/boundary/ghost/facet_images.hpp"
+#include "curvsph/boundary/ghost/flat_corners.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
 
@@ -27,13 +28,6 @@ GhostVelocity parse_ghost_velocity(const std::string& name, const std::string& f
 }
 
 namespace {
-
-// A flat reflection available for corner combinations.
-template <int D>
-struct FlatFace {
-  VecD<D> foot, normal;
-  std::int32_t wall;
-};
 
 template <int D>
 VecD<D> ghost_velocity(GhostVelocity mode, const VecD<D>& u, const VecD<D>& uw, const VecD<D>& n,
@@ -82,37 +76,52 @@ struct Generator {
     out.push_back(r);
   }
 
-  // Reflects (x, u) across the flat faces listed in `set` in turn and emits the result.
+  // Reflects (x, u) across the flat faces of word w in turn (flat_corners.hpp) and emits the
+  // result, with a corner record of the distinct faces in their first order (the wall loads'
+  // split).
   void emit_corner(std::vector<Record>& out, std::vector<Corner>& corners, Index i,
-                   const VecD<D>& x0, const VecD<D>& u0, const FlatFace<D>* const* set,
-                   int count) const {
-    Corner c{static_cast<Index>(out.size()), {-1, -1, -1}, {}};
-    for (int r = 0; r < count; ++r) {
-      c.wall[static_cast<std::size_t>(r)] = set[r]->wall;
-      c.normal[static_cast<std::size_t>(r)] = set[r]->normal;
+                   const VecD<D>& x0, const VecD<D>& u0, const FlatFace<D>* flat,
+                   const ReflectionWord& w) const {
+    Corner c{static_cast<Index>(out.size()), {-1, -1, -1}, {}, 0};
+    for (int r = 0; r < w.length; ++r) {
+      const FlatFace<D>& F = flat[w.face[static_cast<std::size_t>(r)]];
+      bool seen = false;
+      for (int q = 0; q < c.faces; ++q)
+        seen |= c.wall[static_cast<std::size_t>(q)] == F.wall &&
+                c.normal[static_cast<std::size_t>(q)].dot(F.normal) > 1.0 - 1e-12;
+      if (seen || c.faces >= 3) continue;
+      c.wall[c.faces] = F.wall;
+      c.normal[c.faces] = F.normal;
+      ++c.faces;
     }
     corners.push_back(c);
     VecD<D> x = x0, u = u0, u_slip = u0, foot = x0, n = x0;
     double d = 0;
-    for (int r = 0; r < count; ++r) {
-      n = set[r]->normal;
-      d = (x - set[r]->foot).dot(n);
+    for (int r = 0; r < w.length; ++r) {
+      const FlatFace<D>& F = flat[w.face[static_cast<std::size_t>(r)]];
+      n = F.normal;
+      d = (x - F.foot).dot(n);
       foot = x - d * n;
-      const VecD<D> uw = walls[set[r]->wall].velocity(foot);
+      const VecD<D> uw = walls[F.wall].velocity(foot);
       // For free_slip walls u and u_slip are the same sequence.
       u_slip = ghost_velocity<D>(GhostVelocity::free_slip, u_slip, uw, n, 1.0);
       u = opt.velocity == GhostVelocity::free_slip ? u_slip
                                                    : ghost_velocity<D>(opt.velocity, u, uw, n, 1.0);
       x = foot - d * n;
     }
-    emit(out, i, set[count - 1]->wall, x, u, u_slip, 1.0, d, d, foot, n,
-         static_cast<std::uint8_t>(count));
+    const std::int32_t last = flat[w.face[static_cast<std::size_t>(w.length - 1)]].wall;
+    emit(out, i, last, x, u, u_slip, 1.0, std::abs(d), std::abs(d), foot, n,
+         static_cast<std::uint8_t>(w.length));
   }
 
+  static constexpr int kMaxFlat = 12;
+
   // A faceted wall (a polygon): the images of facet_images.hpp, flat faces (kappa = 0, so
-  // every map is the mirror, beta = 1). False for walls that are not faceted.
+  // every map is the mirror, beta = 1). Its single images join `flat` (group k) for the
+  // corners with other walls' flat faces (flat_corners.hpp). False for walls that are not
+  // faceted.
   bool faceted(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
-               const VecD<D>& u) const {
+               const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat) const {
     constexpr int kMaxFaces = 16, kMaxImages = 32;
     std::array<WallFacet<D>, kMaxFaces> faces;
     if (!faceted_walls[k]) return false;
@@ -127,6 +136,12 @@ struct Generator {
       const VecD<D> ug = opt.velocity == GhostVelocity::free_slip
                              ? slip
                              : VecD<D>(uw + im.M.determinant() * (u - uw));
+      const bool single = im.reflections == 1 && (im.M - (Eigen::Matrix<double, D, D>::Identity() -
+                                                          2.0 * im.normal * im.normal.transpose()))
+                                                         .norm() < 1e-12;
+      if (single && nflat < kMaxFlat)
+        flat[static_cast<std::size_t>(nflat++)] = {im.foot, im.normal, k, k,
+                                                   static_cast<Index>(out.size())};
       emit(out, i, k, im.x, ug, slip, 1.0, im.depth, im.source_depth, im.foot, im.normal,
            im.reflections);
     }
@@ -139,7 +154,6 @@ struct Generator {
   // a curved face's ghost is reflected across every planar face perpendicular to it (a pipe's
   // bore meeting its end cap: the double image of that edge). False when x projects onto no
   // face (the region of a convex edge or vertex): the closest point answers there.
-  static constexpr int kMaxFlat = 12;
   bool multiface(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
                  const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
                  bool& no_root) const {
@@ -172,13 +186,12 @@ struct Generator {
       }
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
+      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat)
+        flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k, -1,
+                                                   static_cast<Index>(out.size())};
       emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
            p.normal, 1);
-      if (p.k1 == 0.0 && p.k2 == 0.0) {
-        if (nflat < kMaxFlat) flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k};
-      } else {
-        curved[static_cast<std::size_t>(ncurved++)] = used[q];
-      }
+      if (p.k1 != 0.0 || p.k2 != 0.0) curved[static_cast<std::size_t>(ncurved++)] = used[q];
     }
     // Curved ghost x' reflected across a perpendicular planar face A: the image of x' behind
     // A, velocities composed (emit_corner's rule).
@@ -234,8 +247,8 @@ struct Generator {
             const VecD<D> n = VecD<D>::Unit(a) * (s == 0 ? 1.0 : -1.0);
             const VecD<D> uw = box->velocity(foot);
             const auto [ug, ug_slip] = images(u, uw, n, 1.0);
+            if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k, -1, static_cast<Index>(out.size())};
             emit(out, i, k, foot - d * n, ug, ug_slip, 1.0, d, d, foot, n, 1);
-            if (nflat < kMaxFlat) flat[nflat++] = {foot, n, k};
           }
         }
         continue;
@@ -250,7 +263,7 @@ struct Generator {
         continue;
       }
       if (!(p.distance < support)) continue;
-      if (faceted(out, i, k, x, u)) continue;
+      if (faceted(out, i, k, x, u, flat, nflat)) continue;
       if (multiface(out, i, k, x, u, flat, nflat, no_root)) continue;
       const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
       if (!g.ok) {
@@ -259,29 +272,27 @@ struct Generator {
       }
       const VecD<D> uw = walls[k].velocity(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
+      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat)
+        flat[nflat++] = {p.foot, p.normal, k, -1, static_cast<Index>(out.size())};
       emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
            p.normal, 1);
-      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat) flat[nflat++] = {p.foot, p.normal, k};
     }
 
-    // Corners: mutually perpendicular flat reflections.
+    // Edges between flat faces (flat_corners.hpp): the single images that overlap a
+    // neighbour's go, then the corner images are appended.
     if (nflat >= 2) {
-      auto perpendicular = [&](int a, int b) {
-        return std::abs(flat[a].normal.dot(flat[b].normal)) < 1e-9;
-      };
-      for (int a = 0; a < nflat; ++a)
-        for (int b = a + 1; b < nflat; ++b) {
-          if (!perpendicular(a, b)) continue;
-          const FlatFace<D>* pair[2] = {&flat[a], &flat[b]};
-          emit_corner(out, corners, i, x, u, pair, 2);
-          if constexpr (D == 3) {
-            for (int c = b + 1; c < nflat; ++c) {
-              if (!perpendicular(a, c) || !perpendicular(b, c)) continue;
-              const FlatFace<D>* triple[3] = {&flat[a], &flat[b], &flat[c]};
-              emit_corner(out, corners, i, x, u, triple, 3);
-            }
-          }
+      thread_local std::vector<ReflectionWord> words;
+      thread_local std::vector<char> drop;
+      flat_corner_images<D>(x, flat.data(), nflat, support, words, drop);
+      for (int a = nflat; a-- > 0;)  // each erase shifts the later images down by one
+        if (drop[static_cast<std::size_t>(a)]) {
+          const Index g = flat[static_cast<std::size_t>(a)].image;
+          out.erase(out.begin() + g);
+          for (int b = 0; b < nflat; ++b)
+            if (flat[static_cast<std::size_t>(b)].image > g)
+              --flat[static_cast<std::size_t>(b)].image;
         }
+      for (const ReflectionWord& w : words) emit_corner(out, corners, i, x, u, flat.data(), w);
     }
     return {penetrated, no_root};
   }

@@ -7,10 +7,13 @@
 //    beta from the map and the wall's principal curvatures at the foot point);
 //  - for a box with the fluid inside, the box is treated face by face: one ghost per face
 //    within the support, and
-//  - corners: for every set of two (or, in 3-D, three) flat reflections within the support
-//    whose normals are mutually perpendicular (faces of a box, two or three plane walls
-//    meeting at right angles), the multiply-reflected ghost (reflect across each in turn).
-//    Flat faces at other angles get single reflections only.
+//  - corners: where two flat faces within the support (faces of a box, plane walls, a
+//    polygon's side and another wall's face, planar faces of a CAD solid) meet at an edge,
+//    the images of flat_corners.hpp: at 180/n degrees (90, 60, 45, ...) the multiply
+//    reflected ghosts of the dihedral group (90 degrees: the double reflection; a third face
+//    perpendicular to both adds their reflections across it, the triple one of a box corner),
+//    above 120 degrees the single ghosts cut at the exterior bisector; other angles keep
+//    the single reflections only. A polygon's own corners are facet_images.hpp's.
 // Ghosts are ordered by source particle, then wall, then face, then corner combinations;
 // the order does not depend on the thread count.
 //
@@ -94,14 +97,16 @@ class GhostSet {
   std::vector<double> source_depth;       // d of the source in front of that wall, > 0
   std::vector<VecD<D>> foot;              // foot point on that wall
   std::vector<VecD<D>> normal;            // its normal, into the fluid
-  std::vector<std::uint8_t> reflections;  // 1 single; 2, 3 corner ghosts
-  // Corner ghosts (reflections > 1), ascending by ghost index, with the flat faces reflected
-  // across in order (the wall loads split a corner ghost's reaction between them; `wall` and
-  // `normal` above keep the last face only).
+  std::vector<std::uint8_t> reflections;  // 1 single; 2 .. 7 corner ghosts
+  // Corner ghosts (reflections > 1) of flat faces (flat_corners.hpp), ascending by ghost
+  // index, with the distinct faces reflected across in their first order (the wall loads
+  // split a corner ghost's reaction between them; `wall` and `normal` above keep the last
+  // face only).
   struct Corner {
     Index ghost;
     std::array<std::int32_t, 3> wall;
     std::array<VecD<D>, 3> normal;
+    std::uint8_t faces;  // how many of the above are set (1 to 3)
   };
   std::vector<Corner> corners;
   // Per build.

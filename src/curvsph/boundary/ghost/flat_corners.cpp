@@ -1,0 +1,147 @@
+#include "curvsph/boundary/ghost/flat_corners.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace curvsph {
+namespace {
+
+template <int D>
+double signed_distance(const VecD<D>& y, const FlatFace<D>& f) {
+  return (y - f.foot).dot(f.normal);
+}
+
+template <int D>
+bool perpendicular(const FlatFace<D>& a, const FlatFace<D>& b) {
+  return std::abs(a.normal.dot(b.normal)) < 1e-9;
+}
+
+// The point of the edge line of faces a and b nearest x: x - alpha n_a - beta n_b on both
+// planes, [1 c; c 1] (alpha, beta) = (s_a, s_b) with c = n_a.n_b.
+template <int D>
+VecD<D> edge_point(const VecD<D>& x, const FlatFace<D>& a, const FlatFace<D>& b) {
+  const double c = a.normal.dot(b.normal);
+  const double sa = signed_distance<D>(x, a), sb = signed_distance<D>(x, b);
+  const double det = 1.0 - c * c;
+  const double alpha = (sa - c * sb) / det, beta = (sb - c * sa) / det;
+  return x - alpha * a.normal - beta * b.normal;
+}
+
+// Whether the edge of faces a and b is a real edge of the fluid: some of it lies on the fluid
+// side of every other face. 2-D: the edge is the point where the lines meet; 3-D: the line
+// e0 + tau t (t = n_a x n_b), clipped by each other face k to s_k(e0) + tau t.n_k >= 0, must
+// keep a piece (a wedge's edge ending at a third face perpendicular to it still counts for
+// the particles beyond that end: their double image across the wedge's faces is needed too).
+template <int D>
+bool real_edge(const VecD<D>& x, const FlatFace<D>* f, int n, int a, int b, double tol) {
+  const VecD<D> e = edge_point<D>(x, f[a], f[b]);
+  if constexpr (D == 2) {
+    for (int k = 0; k < n; ++k)
+      if (k != a && k != b && signed_distance<D>(e, f[k]) < -tol) return false;
+    return true;
+  } else {
+    const Vec3d t = f[a].normal.cross(f[b].normal).normalized();
+    double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int k = 0; k < n; ++k) {
+      if (k == a || k == b) continue;
+      const double s = signed_distance<D>(e, f[k]), c = t.dot(f[k].normal);
+      if (std::abs(c) < 1e-12) {
+        if (s < -tol) return false;
+      } else if (c > 0) {
+        lo = std::max(lo, -(s + tol) / c);
+      } else {
+        hi = std::min(hi, -(s + tol) / c);
+      }
+    }
+    return lo <= hi;
+  }
+}
+
+// Deepest point of y behind the faces of word w: a lower bound of its distance to the fluid.
+template <int D>
+double behind(const VecD<D>& y, const FlatFace<D>* f, const ReflectionWord& w) {
+  double d = 0;
+  for (int k = 0; k < w.length; ++k) d = std::max(d, -signed_distance<D>(y, f[w.face[k]]));
+  return d;
+}
+
+}  // namespace
+
+template <int D>
+VecD<D> reflect_word(const VecD<D>& x, const FlatFace<D>* f, const ReflectionWord& w) {
+  VecD<D> y = x;
+  for (int k = 0; k < w.length; ++k) {
+    const FlatFace<D>& F = f[w.face[k]];
+    y -= 2.0 * signed_distance<D>(y, F) * F.normal;
+  }
+  return y;
+}
+
+template <int D>
+void flat_corner_images(const VecD<D>& x, const FlatFace<D>* f, int n, double support,
+                        std::vector<ReflectionWord>& words, std::vector<char>& drop) {
+  words.clear();
+  drop.assign(static_cast<std::size_t>(n), 0);
+  const double tol = 1e-9 * support;
+  const auto keep = [&](const ReflectionWord& w) {
+    if (behind<D>(reflect_word<D>(x, f, w), f, w) < support) words.push_back(w);
+  };
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      const FlatFace<D>& A = f[a];
+      const FlatFace<D>& B = f[b];
+      if (A.group >= 0 && A.group == B.group) continue;  // a polygon's own corner
+      const double c = A.normal.dot(B.normal);
+      if (std::abs(c) > 1.0 - 1e-12) continue;  // parallel: no edge
+      if (!real_edge<D>(x, f, n, a, b, tol)) continue;
+      const double theta = std::acos(std::clamp(-c, -1.0, 1.0));
+      if (theta > 2.0 * std::numbers::pi / 3.0 + 1e-9) {
+        // Overlapping singles: each kept on its own side of the exterior bisector.
+        const VecD<D> ya = x - 2.0 * signed_distance<D>(x, A) * A.normal;
+        const VecD<D> yb = x - 2.0 * signed_distance<D>(x, B) * B.normal;
+        if (signed_distance<D>(ya, A) > signed_distance<D>(ya, B) + tol) drop[a] = 1;
+        if (signed_distance<D>(yb, B) > signed_distance<D>(yb, A) + tol) drop[b] = 1;
+        continue;
+      }
+      const double nd = std::numbers::pi / theta;
+      const int order = static_cast<int>(std::lround(nd));
+      if (order < 2 || order > 6 || std::abs(nd - order) > 1e-6 * order) continue;
+      const std::size_t pair_begin = words.size();
+      for (int len = 2; len <= order; ++len)
+        for (int start = 0; start < (len < order ? 2 : 1); ++start) {
+          ReflectionWord w;
+          w.length = len;
+          for (int k = 0; k < len; ++k)
+            w.face[static_cast<std::size_t>(k)] =
+                static_cast<std::int8_t>(((k + start) % 2 == 0) ? a : b);
+          keep(w);
+        }
+      const std::size_t pair_end = words.size();
+      if constexpr (D == 3) {
+        // A third face perpendicular to both: each image of the pair reflected across it
+        // (a perpendicular pair takes only c > b, so that a box corner's triple comes once).
+        for (int k = order == 2 ? b + 1 : 0; k < n; ++k) {
+          if (k == a || k == b || !perpendicular<D>(f[k], A) || !perpendicular<D>(f[k], B))
+            continue;
+          for (std::size_t q = pair_begin; q < pair_end; ++q) {
+            ReflectionWord w = words[q];
+            if (w.length >= 8) continue;
+            w.face[static_cast<std::size_t>(w.length++)] = static_cast<std::int8_t>(k);
+            keep(w);
+          }
+        }
+      }
+    }
+}
+
+template void flat_corner_images<2>(const Vec2d&, const FlatFace<2>*, int, double,
+                                    std::vector<ReflectionWord>&, std::vector<char>&);
+template void flat_corner_images<3>(const Vec3d&, const FlatFace<3>*, int, double,
+                                    std::vector<ReflectionWord>&, std::vector<char>&);
+template Vec2d reflect_word<2>(const Vec2d&, const FlatFace<2>*, const ReflectionWord&);
+template Vec3d reflect_word<3>(const Vec3d&, const FlatFace<3>*, const ReflectionWord&);
+
+}  // namespace curvsph

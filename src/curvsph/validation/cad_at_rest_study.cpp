@@ -276,9 +276,9 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
         "(deep) and over all. At H/dx = 6 (3-D) 'deep' is the two rows above the floor; the "
-        "3-D misses there are the resolution's: the same box with analytic walls at H/dx = 6, "
-        "9 and 12 is in integrals_findings.md (the CAD closest points make H/dx = 9 about "
-        "five times as long a run).\n\n";
+        "CAD box's misses there are the resolution's (the same box with analytic walls at "
+        "H/dx = 6, 9 and 12: integrals_findings.md; the CAD closest points make H/dx = 9 about "
+        "five times as long a run), the cylinder's are discussed in findings.md.\n\n";
   for (const Solid& s : solids)
     md << "- `" << s.name << "`: " << s.describe << "; depth H = " << s.depth << " m, dx = " << s.dx
        << " m (H/dx = " << std::lround(s.depth / s.dx) << ")\n";

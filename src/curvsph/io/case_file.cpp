@@ -522,7 +522,7 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
   c.boundary.pressure = bnd.choice("pressure",
                                    {"symmetric", "consistent", "tensile_control", "conservative",
                                     "conservative_wall", "conservative_pairs"},
-                                   "symmetric");
+                                   "conservative");
   // Under gravity across a non-periodic axis the ghost carries its source's pressure along the
   // hydrostatic gradient (ghost_boundary.cpp: a copied pressure leaves a tank's first row
   // short of its wall push by 2 rho g d).

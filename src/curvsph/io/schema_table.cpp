@@ -130,7 +130,7 @@ const Row kRows[] = {
 {"boundary.velocity", "choice: no_slip | free_slip", "", "no_slip", "-", "wall velocity condition"},
 {"boundary.shepard", "choice: geometric | volume | monolithic | none", "", "geometric", "-", "Shepard factor of the boundary integrals"},
 {"boundary.wall_force", "bool", "", "false", "-", "push (c0^2/dx)(1 - d/d0)^2 off walls closer than d0 = 0.1 dx (Calderon §3.2)"},
-{"boundary.pressure", "choice: symmetric | consistent | tensile_control | conservative | conservative_wall | conservative_pairs", "", "symmetric", "-", "pressure term of the boundary integrals (conservative: energy-paired wall terms; conservative_wall / conservative_pairs: the measured alternatives; integrals_boundary.cpp item 9)"},
+{"boundary.pressure", "choice: symmetric | consistent | tensile_control | conservative | conservative_wall | conservative_pairs", "", "conservative", "-", "pressure term of the boundary integrals (conservative: energy-paired wall terms, the default; symmetric: p_b extrapolated from the neighbours, the form before; conservative_wall / conservative_pairs: the measured alternatives; integrals_boundary.cpp item 9)"},
 {"boundary.ghost_pressure", "choice: copy | hydrostatic", "", "derived: hydrostatic under gravity across a non-periodic axis, else copy", "-", "ghost pressure p_s or p_s + rho_s g.(x_g - x_s) (method: ghost)"},
 {"boundary.penetration", "choice: project | stop", "", "project", "-", "a particle past a wall is put back (project) or ends the run (stop)"},
 {"boundary.wall_tension", "bool", "", "true", "-", "false clamps the wall terms' pressure at 0 (a wall that pushes, never pulls)"},

@@ -6,13 +6,14 @@
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
 //    plane-cylinder), depth H = 0.08 m, dx = H/6.
-// The 2-D solids with ghosts are packed first (setup.relax with free_faces: hold).
+// The 2-D solids are packed first (setup.relax with free_faces: hold; the integrals too).
 // 2-D runs 1 s (t sqrt(g/H) = 4.4), 3-D 0.5 s (5.5; the CAD closest points make 1 s too long
 // for the study's 20 min on one thread); --quick: a tenth. Each from the hydrostatic start
-// with the three ghost maps and with boundary integrals (geometric Shepard factor), one
-// thread. Per run: the stray-particle counters of metrics.json and the hydrostatic analysis'
-// pressure against rho0 g (H - z) at the end: the RMS over the particles at least one support
-// 2h below the free surface ("deep"), and over all particles, both over rho0 g H.
+// with the three ghost maps and with boundary integrals (geometric Shepard factor; the
+// default energy-paired wall terms, boundary.pressure: conservative, and the symmetric form
+// for comparison), one thread. Per run: the stray-particle counters of metrics.json and the
+// hydrostatic analysis' pressure against rho0 g (H - z) at the end: the RMS over the particles at
+// least one support 2h below the free surface ("deep"), and over all particles, both over rho0 g H.
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -49,6 +50,9 @@ const Method kMethods[] = {
     {"mirror_beta", "{method: ghost, map: mirror_beta}"},
     {"density_preserving", "{method: ghost, map: density_preserving}"},
     {"integrals", "{method: integrals}"},
+    // The form that was the default before (a comparison: it gains energy at walls,
+    // integrals_findings.md).
+    {"integrals_symmetric", "{method: integrals, pressure: symmetric}"},
 };
 
 struct Solid {
@@ -124,7 +128,8 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
   s.dim = 3;
   s.depth = H;
   s.dx = H / 6;
-  const auto file = dir / (name + ".step");
+  // Absolute: the case names its file relative to the case's own folder otherwise.
+  const auto file = std::filesystem::absolute(dir / (name + ".step"));
   if (name == "box") {
     write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.08, 0.08, 2 * H)).Shape(), file);
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
@@ -153,12 +158,14 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
                   s.dim == 2 ? "[0, -9.81]" : "[0, 0, -9.81]", m.boundary, t_end, t_end / 10,
                   s.depth, s.bottom));
   root["walls"] = s.walls;
-  // 2-D with ghosts: the lattice packed first inside the walls and the free surface
+  // 2-D: the lattice packed first inside the walls and the free surface
   // (setup/relax_closure.hpp); on the bare lattice the walls across it leave the first rows
-  // off balance (findings.md). The integrals keep the bare lattice (their packing closes a box
-  // region only), and so do the 3-D CAD solids (2000 packing steps of CAD closest points).
-  if (s.dim == 2 && std::string(m.name) != "integrals")
-    root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
+  // off balance (findings.md). The integrals too: their own packing closes a box region only
+  // (setup/relax_integrals.hpp), so they start from the node-density packing of the default
+  // ghost map (setup.relax.map defaults to boundary.map, mirror_beta): on the 60 degree tank
+  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The 3-D CAD
+  // solids keep the bare lattice (2000 packing steps of CAD closest points).
+  if (s.dim == 2) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
   return root;
 }
 
@@ -258,15 +265,20 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
      << ". Each solid is filled with water from the hydrostatic state and held under gravity for "
      << t2 << " s (2-D) or " << t3
      << " s (3-D) with the three ghost maps and with boundary integrals (geometric Shepard "
-        "factor); "
+        "factor; `integrals`: the default wall terms, `boundary.pressure: conservative`; "
+        "`integrals_symmetric`: `pressure: symmetric`, the default before, for comparison); "
         "linear EOS with c0 = 10 sqrt(g H), continuity density with delta-SPH 0.1, h = 2 dx, "
         "the case defaults otherwise (hydrostatic ghost pressure, the 0.1 dx wall contact). "
-        "The 2-D solids with the ghost maps start from the lattice packed inside the walls and "
-        "the free surface (`setup: {relax: {free_faces: hold}}`); the integrals and the 3-D "
-        "solids from the bare lattice. "
+        "The 2-D solids start from the lattice packed inside the walls and the free surface "
+        "(`setup: {relax: {free_faces: hold}}`, the node-density packing of the mirror_beta "
+        "ghost map, with the integrals too: their own packing closes a box region only); the "
+        "3-D solids from the bare lattice. "
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
-        "(deep) and over all.\n\n";
+        "(deep) and over all. At H/dx = 6 (3-D) 'deep' is the two rows above the floor; the "
+        "CAD box's misses there are the resolution's (the same box with analytic walls at "
+        "H/dx = 6, 9 and 12: integrals_findings.md; the CAD closest points make H/dx = 9 about "
+        "five times as long a run), the cylinder's are discussed in findings.md.\n\n";
   for (const Solid& s : solids)
     md << "- `" << s.name << "`: " << s.describe << "; depth H = " << s.depth << " m, dx = " << s.dx
        << " m (H/dx = " << std::lround(s.depth / s.dx) << ")\n";

@@ -7,8 +7,9 @@
 // Optional keys: `boundary.wall_force: true` adds a short-range repulsion for particles closer
 // than 0.1 dx to a wall (Calderon §3.2; off by default); `boundary.pressure: consistent |
 // symmetric | tensile_control` chooses the near-wall pressure gradient (items 2b and 2d of the
-// .cpp; symmetric by default); `conservative | conservative_wall | conservative_pairs` pair
-// the wall and fluid terms of the momentum with the continuity's for energy (item 9).
+// .cpp); `conservative | conservative_wall | conservative_pairs` pair the wall and fluid terms
+// of the momentum with the continuity's for energy (item 9; conservative by default: the
+// symmetric form gains energy at walls, docs/validation/cad_at_rest/integrals_findings.md).
 #include <cstdint>
 #include <memory>
 #include <span>

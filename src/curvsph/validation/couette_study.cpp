@@ -380,11 +380,11 @@ StudyResult run_couette_study(const StudyContext& ctx) {
         "(`initial: {couette: {}}`: v_theta(r) and the radial pressure balance) and runs to t = "
      << t_run
      << " s: the error measures how far each boundary treatment pulls the flow off the exact "
-        "steady state in that time, not the converged discrete steady state. (C) Three "
-        "resolutions (dx = "
+        "steady state in that time, not the converged discrete steady state. (C) The runs "
+        "at dx = "
      << fmt::format("{:g}", rest_dxs.front() * 1e3) << ".."
      << fmt::format("{:g}", rest_dxs.back() * 1e3)
-     << " mm) are started from rest as in Barker, to t = " << t_rest
+     << " mm are started from rest as in Barker, to t = " << t_rest
      << " s (about four e-folding times of the slowest mode), with every map. The hydrostatic "
         "density (A) is exact at t = 0; Fig. 2's run is "
      << t_hydro << " s long as in the paper.\n\n"

@@ -187,6 +187,9 @@ struct Case {
   // Named initial flow field (`initial: {taylor_green: {U: 1}}`); empty when absent.
   std::string initial_field;
   YAML::Node initial_params;
+  // setup.hydrostatic: without `initial`, each fluid region starts at rest-pressure balance
+  // under gravity (setup/hydrostatic_start.hpp); on by default with free_surface_defaults.
+  bool hydrostatic_start = false;
   // Gravity with a component along an axis that is not periodic: a free surface or a tank is
   // likely, and the defaults of continuity density with delta-SPH and of the hydrostatic ghost
   // pressure apply (README, "Defaults"). Gravity along a periodic axis drives a flow instead.

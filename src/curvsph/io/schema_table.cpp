@@ -139,6 +139,7 @@ const Row kRows[] = {
 {"setup", "map", "", "optional", "-", "initial particle set-up"},
 {"setup.random_seed", "integer", "[0, 4294967295]", "1", "-", "seed of random regions, jitter and packing"},
 {"setup.jitter", "number", "[0, 0.5)", "0", "dx", "random offset of every lattice point per axis"},
+{"setup.hydrostatic", "bool", "", "derived: true under gravity across a non-periodic axis without `initial`, else false", "-", "start each fluid region at p = p(depth below the top of its own particles along gravity), densities from the EOS"},
 {"setup.relax", "map", "", "optional", "-", "particle packing before the run"},
 {"setup.relax.max_steps", "integer", "[0, inf)", "2000", "-", "packing steps (0: off)"},
 {"setup.relax.tolerance", "number", "(0, inf)", "0.001", "-", "packing stops below this spread (integrals: max h|R|)"},

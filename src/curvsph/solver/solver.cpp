@@ -20,6 +20,7 @@
 #include "curvsph/physics/particle_shifting.hpp"
 #include "curvsph/physics/surface_tension.hpp"
 #include "curvsph/setup/generate.hpp"
+#include "curvsph/setup/hydrostatic_start.hpp"
 #include "curvsph/setup/relax_closure.hpp"
 #include "curvsph/setup/relax_integrals.hpp"
 
@@ -116,7 +117,10 @@ Solver<D>::Solver(const Case& c) : case_(c), W_(static_cast<Real>(c.h())) {
     }
   }
 
-  if (!c.initial_field.empty()) apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+  if (!c.initial_field.empty())
+    apply_initial_field<D>(c, F_.eos, F_.rho0, P_);
+  else if (c.hydrostatic_start)
+    hydrostatic_start<D>(c, F_.eos, F_.rho0, P_);  // the free-surface default
   open_ = OpenBoundaries<D>(c, W_.support);
   if (open_.active()) open_.setup(P_, walls_);  // the buffer layers (solver/open_boundaries.hpp)
   {

@@ -71,6 +71,43 @@ TEST(Probes, WallPressureOfAHydrostaticLayer) {
   std::filesystem::remove(path);
 }
 
+// A sensor with a face normal (probes.*.normal) reads only the fluid in front of its face:
+// a sensor on top of a block at z = 0.5 whose kernel support reaches fluid below that plane
+// (as the dam break's box-top sensors reach the run-up beside the box's front face). With
+// p = 1000 Pa above the plane and -5000 Pa below it (no gravity), the sensor with the normal
+// (0, 0, 1) reads 1000 Pa; without it, the W V-weighted mean of both, computed here by brute
+// force over every particle (no cell list).
+TEST(Probes, FaceNormalExcludesTheFluidBehindTheSensor) {
+  const int n = 14;
+  const double dx = 1.0 / n, rho = 1000;
+  const WendlandC2<3> W(2 * dx);
+  Particles<3> P = lattice_layer(n, n, rho);
+  for (std::size_t k = 0; k < P.size(); ++k) P.p[k] = P.x[k][2] > 0.5 ? 1000.0 : -5000.0;
+  const CellList<3> cells = cells_of(P, W);
+  ProbeSpec s;
+  s.name = "S";
+  s.point = Vec3d(0.5, 0.5, 0.5);
+  s.fields = {"p_wall"};
+  ProbeSpec t;
+  t.name = "T";
+  t.point = s.point;
+  t.fields = s.fields;
+  t.normal = Vec3d(0, 0, 1);
+  const auto path = std::filesystem::temp_directory_path() / "curvsph_test_probes_face.csv";
+  ProbeWriter<3> w({s, t}, path.string(), dx);
+  const auto v = w.sample(P, cells, W);
+  double num = 0, den = 0;
+  for (std::size_t k = 0; k < P.size(); ++k) {
+    const double wk = W.value((P.x[k] - Vec<3>(0.5, 0.5, 0.5)).norm()) * P.mass[k] / P.rho[k];
+    num += wk * P.p[k];
+    den += wk;
+  }
+  EXPECT_NEAR(v[0], num / den, 1e-9 * 5000);
+  EXPECT_LT(v[0], 0);  // half the support in tension: the mean is negative
+  EXPECT_NEAR(v[1], 1000.0, 1e-9 * 1000);
+  std::filesystem::remove(path);
+}
+
 // Water-height gauges (kind gauge): the height is the highest point of the gauge line where the
 // kernel-weighted fluid fraction sum_j W V_j is at least 1/2, which for a lattice layer of n
 // rows is its surface, n dx (a half space gives 1/2 exactly at its surface), to the march's

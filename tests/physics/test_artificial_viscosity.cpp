@@ -131,5 +131,52 @@ TEST(ArtificialViscosity, ApproachingPairLosesKineticEnergy) {
   EXPECT_NEAR((P.mass[0] * P.a[0] + P.mass[1] * P.a[1]).norm(), 0, 1e-15);
 }
 
+// artificial_viscosity.form: approaching. One pair by hand (Monaghan 1992 eq. 4.1): particles
+// at x_0 = (0.5, 0.5), x_1 = (0.58, 0.56) (r = 0.1), u_0 = (1, 0), u_1 = (-1, 0.5), so
+// x_01 = (-0.08, -0.06), u_01 = (2, -0.5), u_01.x_01 = -0.16 + 0.03 = -0.13 < 0 (approaching).
+// h = 0.1, eta^2 = 1e-4: mu = -0.13 / (0.01 + 0.0001) = -12.871287...; rho_0 = 1000,
+// rho_1 = 1040, rho_bar = 1020; alpha = 0.1, c = 40: Pi = -alpha h c mu / rho_bar
+// = -0.4 (-12.871287) / 1020 = 5.0475636e-3. Wendland C2 in 2-D at q = r/h = 1:
+// W = 7/(4 pi h^2) (1 - q/2)^4 (2q + 1), dW/dr = 7/(4 pi h^3) (-5 q) (1 - q/2)^3
+// = 557.04230 (-5/8) = -348.15144 (1/m^3 at h = 0.1); grad_0 W = dW/dr x_01 / r
+// = -348.15144 (-0.8, -0.6) = (278.52115, 208.89086). du_0/dt = -m_1 Pi grad_0 W with m_1 = 2:
+// (-2.811706, -2.108780); du_1/dt = +m_0 Pi grad_0 W with m_0 = 1.5: (2.108780, 1.581585).
+// Reversing u_1's approach (u_1 = (1.5, 0.5): u_01.x_01 = 0.04 + 0.03 > 0) switches the pair off.
+TEST(ArtificialViscosity, ApproachingFormMatchesMonaghanPairByHand) {
+  Particles<2> P;
+  P.resize(2);
+  P.x[0] = Vec<2>(0.5, 0.5);
+  P.x[1] = Vec<2>(0.58, 0.56);
+  P.v[0] = Vec<2>(1, 0);
+  P.v[1] = Vec<2>(-1, 0.5);
+  P.mass[0] = 1.5;
+  P.mass[1] = 2;
+  P.rho[0] = 1000;
+  P.rho[1] = 1040;
+  const Real h = 0.1;
+  WendlandC2<2> W(h);
+  CellList<2> cells;
+  cells.configure(W.support, Vec3d::Zero(), Vec3d::Ones(), {false, false, false});
+  cells.build(P.x);
+  const Real alpha_h_c0 = 0.1 * h * 40;
+  add_artificial_viscosity(P, cells, W, alpha_h_c0, {1000.0}, ArtificialViscosityForm::approaching);
+  EXPECT_NEAR(P.a[0][0], -2.811706, 3e-5);
+  EXPECT_NEAR(P.a[0][1], -2.108780, 3e-5);
+  EXPECT_NEAR(P.a[1][0], 2.108780, 3e-5);
+  EXPECT_NEAR(P.a[1][1], 1.581585, 3e-5);
+  // The all-pairs form of the same pair differs only by rho0 / rho_i V_j against m_j / rho_bar.
+  for (auto& a : P.a) a.setZero();
+  add_artificial_viscosity(P, cells, W, alpha_h_c0, {1000.0});
+  EXPECT_NEAR(P.a[0][0], -2.811706 * (1000.0 / (1000 * 1040)) / (1.0 / 1020), 3e-5);
+  // Receding: the approaching form is off, the all-pairs form is not.
+  P.v[1] = Vec<2>(1.5, 0.5);
+  for (auto& a : P.a) a.setZero();
+  add_artificial_viscosity(P, cells, W, alpha_h_c0, {1000.0}, ArtificialViscosityForm::approaching);
+  EXPECT_EQ(P.a[0].norm(), 0);
+  EXPECT_EQ(P.a[1].norm(), 0);
+  add_artificial_viscosity(P, cells, W, alpha_h_c0, {1000.0});
+  EXPECT_GT(P.a[0].norm(), 0);
+}
+
 }  // namespace
 }  // namespace curvsph

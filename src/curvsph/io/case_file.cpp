@@ -466,8 +466,10 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
 
   if (top.has("artificial_viscosity")) {
     const Keys av = top.sub("artificial_viscosity");
-    av.allow({"alpha"});
+    av.allow({"alpha", "form"});
     c.artificial_alpha = av.non_negative("alpha", 0.0);
+    c.artificial_approaching =
+        av.choice("form", {"all_pairs", "approaching"}, "all_pairs") == "approaching";
   }
 
   if (top.has("forcing")) {
@@ -620,13 +622,13 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
   std::set<std::string> probe_names;
   for (std::size_t i = 0; top.has("probes") && i < probes.size(); ++i) {
     const Keys pk(probes[i], file, "probes." + std::to_string(i));
-    pk.allow({"name", "point", "fields", "gauge"});
+    pk.allow({"name", "point", "fields", "gauge", "normal"});
     ProbeSpec p;
     p.name = pk.text("name");
     if (!probe_names.insert(p.name).second) pk.fail(pk.key("name"), "duplicate probe name");
     if (pk.has("gauge")) {
-      if (pk.has("point") || pk.has("fields"))
-        pk.fail(pk.key("gauge"), "a gauge takes no point or fields of its own");
+      if (pk.has("point") || pk.has("fields") || pk.has("normal"))
+        pk.fail(pk.key("gauge"), "a gauge takes no point, fields or normal of its own");
       const Keys g = pk.sub("gauge");
       g.allow({"point", "direction"});
       p.kind = ProbeSpec::Kind::gauge;
@@ -636,6 +638,11 @@ Case read_case_tree(YAML::Node root, const std::filesystem::path& path) {
       p.direction.normalize();
     } else {
       p.point = pk.vector("point", D);
+      if (pk.has("normal")) {
+        p.normal = pk.vector("normal", D);
+        if (p.normal.norm() == 0) pk.fail(pk.key("normal"), "must not be zero");
+        p.normal.normalize();
+      }
       const YAML::Node fl = pk.raw("fields");
       if (!fl || !fl.IsSequence() || fl.size() == 0)
         pk.fail(pk.key("fields"), "missing (a list of: p, p_wall, rho, vel)");

@@ -100,6 +100,7 @@ struct ProbeSpec {
   Vec3d point = Vec3d::Zero();
   Vec3d direction = Vec3d::Zero();  // gauge
   std::vector<std::string> fields;  // point: p, p_wall, rho, vel (io/probes.hpp)
+  Vec3d normal = Vec3d::Zero();     // point: sensor face normal, unit (zero: none; io/probes.hpp)
 };
 
 struct SurfaceTensionSpec {
@@ -135,6 +136,9 @@ struct Case {
   // artificial_viscosity.alpha: the delta-SPH momentum diffusion (physics/artificial_viscosity.hpp;
   // 0: off, the default)
   double artificial_alpha = 0;
+  // artificial_viscosity.form: approaching = Monaghan's original form, on approaching pairs
+  // only (physics/artificial_viscosity.hpp); false: every pair (the delta-SPH form, default)
+  bool artificial_approaching = false;
   unsigned random_seed = 1;
   // setup.jitter: every lattice point moved by a uniform random offset of up to jitter dx per
   // axis (setup.random_seed), 0 <= jitter < 0.5. A start that breaks the lattice's symmetry

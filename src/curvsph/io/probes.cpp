@@ -17,9 +17,11 @@ struct Interpolated {
 
 template <int D>
 Interpolated<D> interpolate(const Vec<D>& x, const Particles<D>& P, const CellList<D>& cells,
-                            const WendlandC2<D>& W, const Vec<D>& g = Vec<D>::Zero()) {
+                            const WendlandC2<D>& W, const Vec<D>& g = Vec<D>::Zero(),
+                            const Vec<D>& face = Vec<D>::Zero()) {
   Interpolated<D> s;
   cells.for_each_neighbor(x, P.x, [&](Index j, const Vec<D>& r, Real r2) {
+    if (r.dot(face) > 0) return;  // behind the sensor's face (r = x - x_j; probes.hpp)
     const Real w = W.value(std::sqrt(r2)) * P.mass[j] / P.rho[j];
     s.fraction += w;
     s.p_wall += w * (P.p[j] + P.rho[j] * g.dot(r));  // r = x - x_j
@@ -93,7 +95,8 @@ std::vector<double> ProbeWriter<D>::sample(const Particles<D>& P, const CellList
       vals.push_back(height);
       continue;
     }
-    const auto s = interpolate<D>(x0, P, cells, W, gravity_);
+    const auto s =
+        interpolate<D>(x0, P, cells, W, gravity_, pr.normal.head<D>().template cast<Real>());
     const bool wet = s.fraction > Real(0.1);  // no fluid at the probe: write NaN, not 0
     for (const auto& f : pr.fields) {
       if (f == "p") vals.push_back(wet ? s.p : nan);

@@ -11,6 +11,11 @@
 // A plain Shepard average `p` at a wall point is the pressure at the centroid of the half
 // support (about 0.75 h into the fluid), biased by the hydrostatic gradient there.
 // A probe whose fluid fraction is below 0.1 (dry) writes NaN.
+// A probe with a `normal` (probes.*.normal: the normal of the wall face it sits on, into the
+// fluid) sums only the particles in front of that face, (x_j - x).n >= 0: a flush sensor
+// feels the fluid on its own side of the wall, not fluid across an edge of the wall within
+// the kernel's support (2h, 0.11 m at the dam break's 0.55/20, where the sensors on the box
+// top sit 0.021 m from its front edge; docs/validation/dam_break_3d/findings.md).
 #include <fstream>
 #include <string>
 #include <vector>

@@ -70,6 +70,7 @@ const Row kRows[] = {
 
 {"artificial_viscosity", "map", "", "optional", "-", "delta-SPH momentum diffusion"},
 {"artificial_viscosity.alpha", "number", "[0, inf)", "0", "-", "artificial viscosity coefficient"},
+{"artificial_viscosity.form", "choice: all_pairs | approaching", "", "all_pairs", "-", "every pair (delta-SPH momentum diffusion) or approaching pairs only (Monaghan 1992 eq. 4.1)"},
 
 {"pressure_gradient", "choice: symmetric | difference", "", "symmetric", "-", "pressure term: p_j + p_i (Barker's symmetric form) or p_j - p_i (no force from a uniform background pressure; needs shifting or the transport velocity)"},
 {"transport_velocity", "map", "", "optional", "-", "Adami et al.'s transport velocity (summation density, no shifting)"},
@@ -188,6 +189,7 @@ const Row kRows[] = {
 {"probes.*.name", "string", "", "required", "-", "unique probe name (the CSV column prefix)"},
 {"probes.*.point", "vector", "", "required", "m", "probe position"},
 {"probes.*.fields", "list", "", "required", "-", "any of p, p_wall, rho, vel"},
+{"probes.*.normal", "vector", "", "optional", "-", "normal into the fluid of the wall face a sensor sits on: only particles in front of it are summed"},
 {"probes.*.gauge", "map", "", "optional", "-", "a free-surface height gauge (no point or fields of its own)"},
 {"probes.*.gauge.point", "vector", "", "required", "m", "start of the gauge line"},
 {"probes.*.gauge.direction", "vector", "", "required", "-", "direction of the gauge line (non-zero)"},

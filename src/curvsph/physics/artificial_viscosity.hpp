@@ -18,6 +18,19 @@
 // velocity (ghost_boundary.cpp), so the term stays the Newtonian viscosity above up to the
 // wall (tests/cases/test_couette_startup.cpp: a plane Couette start-up follows the series
 // with nu + alpha h c0 / (2 (D + 2)); without the ghosts the wall rows slip, 0.27 U at 10 s).
+//
+// Form `approaching` (artificial_viscosity.form): Monaghan's artificial viscosity as he wrote
+// it (Monaghan 1992, Annu. Rev. Astron. Astrophys. 30, eq. 4.1, without the beta mu^2 term),
+//   du_i/dt = -sum_j m_j Pi_ij grad_i W_ij,
+//   Pi_ij = -alpha h c mu_ij / rho_bar_ij  if u_ij.x_ij < 0, else 0,
+//   mu_ij = u_ij.x_ij / (|x_ij|^2 + eta^2),  rho_bar_ij = (rho_i + rho_j) / 2,
+// with u_ij = u_i - u_j, x_ij = x_i - x_j and c the solver's c0 (DualSPHysics' "artificial"
+// viscosity, its usual setting for this dam break). It acts on approaching pairs only: a
+// compression (an impact, the acoustic ringing after it) is damped, a stretching flow (the
+// thin surge front) is not, which the all-pairs form above resists like a viscosity
+// (docs/validation/dam_break_3d/findings.md: alpha 0.05 on all pairs delayed the impact by
+// 0.019-0.046 s). Up to rho0 / rho_i V_j = m_j rho0 / (rho_i rho_j) against m_j / rho_bar
+// (equal at rho = rho0) the pair factor is the all-pairs one, switched off for receding pairs.
 #include <cmath>
 
 #include "curvsph/core/parallel.hpp"
@@ -28,6 +41,19 @@
 #include "curvsph/physics/pair_factors.hpp"
 
 namespace curvsph {
+
+// artificial_viscosity.form (case_file.hpp)
+enum class ArtificialViscosityForm { all_pairs, approaching };
+
+// The `approaching` form's pair factor g_ij with du_i/dt += m_j g_ij x_ij and du_j/dt -=
+// m_i g_ij x_ij (Monaghan 1992 eq. 4.1 with grad_i W_ij = f x_ij, f = W.gradient_factor(r)):
+//   g_ij = -Pi_ij f = alpha h c0 mu_ij f / rho_bar_ij for u_ij.x_ij < 0, else 0.
+// `ux` = u_ij.x_ij, `r2` = |x_ij|^2, `eta2` = 0.01 h^2.
+inline Real monaghan_pair_factor(Real alpha_h_c0, Real rho_i, Real rho_j, Real f, Real ux, Real r2,
+                                 Real eta2) {
+  if (ux >= 0) return 0;
+  return alpha_h_c0 * 2 / (rho_i + rho_j) * f * ux / (r2 + eta2);
+}
 
 // Adds the term to P.a (after the fluid pair forces); nothing when alpha_h_c0 = alpha h c0 is
 // 0 (the default: off). `rho0` per phase; [mpi] `rule`: which pairs this rank computes and
@@ -40,8 +66,10 @@ namespace curvsph {
 template <int D>
 void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
                               Real alpha_h_c0, const std::vector<Real>& rho0, PairFactors<D>& pf,
-                              const PairRuleArg<D>& rule = {}) {
+                              const PairRuleArg<D>& rule = {},
+                              ArtificialViscosityForm form = ArtificialViscosityForm::all_pairs) {
   if (alpha_h_c0 == 0) return;
+  const bool approaching = form == ArtificialViscosityForm::approaching;
   const Index n = rule.computed(P);
   // Under the midpoint rule the halo copies' entries of P.a are zero here (the force pass
   // sent them to their owners): they collect this pass's part alone.
@@ -62,6 +90,15 @@ void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const W
         Vec<D>(Vec<D>::Zero()),
         [&](Vec<D>& a_i, Index i, Index j, const Vec<D>& r, Real r2) {
           if (!rule.template computes<M>(P, n, i, j, r)) return;
+          if (approaching) {
+            const Real g = monaghan_pair_factor(alpha_h_c0, P.rho[i], P.rho[j],
+                                                W.gradient_factor(std::sqrt(r2)),
+                                                (P.v[i] - P.v[j]).dot(r), r2, eta2);
+            if (g == 0) return;
+            a_i += (g * P.mass[j]) * r;
+            if (rule.template adds_to<M>(j, n)) P.a[j] -= (g * P.mass[i]) * r;
+            return;
+          }
           // (u_j - u_i).(x_j - x_i) = (u_i - u_j).r
           const Real f = W.gradient_factor(std::sqrt(r2)) * (P.v[i] - P.v[j]).dot(r) / (r2 + eta2);
           a_i += (C[i] * f * V[j]) * r;
@@ -76,9 +113,10 @@ void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const W
 
 template <int D>
 void add_artificial_viscosity(Particles<D>& P, const CellList<D>& cells, const WendlandC2<D>& W,
-                              Real alpha_h_c0, const std::vector<Real>& rho0) {
+                              Real alpha_h_c0, const std::vector<Real>& rho0,
+                              ArtificialViscosityForm form = ArtificialViscosityForm::all_pairs) {
   PairFactors<D> pf;
-  add_artificial_viscosity(P, cells, W, alpha_h_c0, rho0, pf);
+  add_artificial_viscosity(P, cells, W, alpha_h_c0, rho0, pf, {}, form);
 }
 
 }  // namespace curvsph

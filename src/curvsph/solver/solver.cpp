@@ -239,7 +239,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
       add_transport_stress(P_, cells_, W_, tv_, tv_acc_, rule);
     }
     add_artificial_viscosity(P_, cells_, W_, Real(case_.artificial_alpha) * W_.h * F_.eos.c0,
-                             F_.rho0, pair_, rule);
+                             F_.rho0, pair_, rule,
+                             case_.artificial_approaching ? ArtificialViscosityForm::approaching
+                                                          : ArtificialViscosityForm::all_pairs);
     if (!case_.surface_tension.empty()) {
       const SurfaceTensionWalls<D> st_walls{&walls_, &contact_angles_,
                                             boundary_ ? boundary_->images() : WallImages<D>{},

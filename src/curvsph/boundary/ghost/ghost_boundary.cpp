@@ -8,6 +8,7 @@
 #include "curvsph/boundary/wall_force.hpp"
 #include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/parallel.hpp"
+#include "curvsph/physics/artificial_viscosity.hpp"
 
 namespace curvsph {
 namespace {
@@ -29,6 +30,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     no_tension_ = !c.boundary.wall_tension;
     difference_ = c.pressure_difference;
     av_alpha_h_c0_ = static_cast<Real>(c.artificial_alpha) * W_.h * F_.eos.c0;
+    av_approaching_ = c.artificial_approaching;
     Vec3d lo = c.domain_min, hi = c.domain_max;
     cells_.configure(W_.support, lo, hi, c.periodic);
   }
@@ -239,8 +241,13 @@ class GhostBoundary final : public BoundaryModel<D> {
         Vec<D> avg = Vec<D>::Zero();
         if (av_ci > 0) {
           const Real eta2 = Real(0.01) * W_.h * W_.h;
-          const Real Vg = bg * P.mass[s] / P.rho[s];
-          avg = (av_ci * f * Vg * (P.v[i] - G_.v[g]).dot(r) / (r2 + eta2)) * r;
+          const Real ux = (P.v[i] - G_.v[g]).dot(r);
+          if (av_approaching_)  // the ghost as a neighbour of mass beta_g m_s, density rho_s
+            avg = (monaghan_pair_factor(av_alpha_h_c0_, P.rho[i], P.rho[s], f, ux, r2, eta2) * bg *
+                   P.mass[s]) *
+                  r;
+          else
+            avg = (av_ci * f * (bg * P.mass[s] / P.rho[s]) * ux / (r2 + eta2)) * r;
           av += avg;
         }
         if (track)
@@ -325,6 +332,8 @@ class GhostBoundary final : public BoundaryModel<D> {
   bool no_tension_ = false;   // boundary.wall_tension: false
   bool difference_ = false;   // pressure_gradient: difference
   Real av_alpha_h_c0_ = 0;    // artificial_viscosity.alpha h c0 (0: off)
+  // artificial_viscosity.form: approaching
+  bool av_approaching_ = false;
   GhostSet<D> G_;
   std::vector<Index> own_begin_, own_end_;  // each particle's own ghosts [begin, end)
   CellList<D> cells_;

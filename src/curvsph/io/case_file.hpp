@@ -60,7 +60,8 @@ struct BoundarySpec {
   std::string velocity = "no_slip";
   std::string shepard = "geometric";
   bool wall_force = false;  // repulsion closer than 0.1 dx (Calderon §3.2), both methods
-  std::string pressure = "conservative";  // integrals: conservative | symmetric | consistent | tensile_control | ...
+  std::string pressure =
+      "conservative";  // integrals: conservative | symmetric | consistent | tensile_control | ...
   std::string ghost_pressure = "copy";  // ghost: copy | hydrostatic (p_s + rho_s g.(x_g - x_s))
   // boundary.penetration: what happens to a fluid particle found past a wall (distance <= 0)
   // at a step. project: it is put back on the fluid side along the wall normal with its

@@ -20,7 +20,6 @@
 
 #include "curvsph/analysis/cylinder_benchmark.hpp"
 #include "curvsph/io/case_file.hpp"
-#include "curvsph/io/case_key.hpp"
 #include "curvsph/solver/run.hpp"
 #include "curvsph/validation/run_cache.hpp"
 #include "curvsph/validation/study.hpp"
@@ -172,15 +171,7 @@ StudyResult run_cylinder_benchmark_study(const StudyContext& ctx) {
     o.out_dir = ctx.out_dir / name;
     o.overwrite = true;  // a study redoes its runs in its own folders
     o.threads = ctx.threads;
-    const std::string fingerprint = case_key(case_path);
-    nlohmann::json m = cached_run(o.out_dir, fingerprint, overrides);
-    if (m.is_null()) {
-      std::filesystem::create_directories(o.out_dir);
-      m = run_case(read_case(case_path, overrides), o);
-      store_run(o.out_dir, fingerprint, overrides, m);
-    } else {
-      std::cerr << name << ": reusing the finished run in " << o.out_dir.string() << "\n";
-    }
+    const nlohmann::json m = run_or_reuse(case_path, overrides, o);
     const Histories h = read_histories(o.out_dir, q);
     for (std::size_t k = 0; k < h.cd.t.size(); ++k)
       hist << fmt::format("{},{:.6g},{:.8g},{:.8g}\n", name, h.cd.t[k], h.cd.v[k], h.cl.v[k]);

@@ -22,7 +22,6 @@
 
 #include "curvsph/analysis/oscillating_force.hpp"
 #include "curvsph/io/case_file.hpp"
-#include "curvsph/io/case_key.hpp"
 #include "curvsph/solver/run.hpp"
 #include "curvsph/validation/run_cache.hpp"
 #include "curvsph/validation/study.hpp"
@@ -157,15 +156,7 @@ StudyResult run_oscillating_cylinder_study(const StudyContext& ctx) {
     o.out_dir = ctx.out_dir / name;
     o.overwrite = true;
     o.threads = ctx.threads;
-    const std::string fingerprint = case_key(case_path);
-    nlohmann::json m = cached_run(o.out_dir, fingerprint, overrides);
-    if (m.is_null()) {
-      std::filesystem::create_directories(o.out_dir);
-      m = run_case(read_case(case_path, overrides), o);
-      store_run(o.out_dir, fingerprint, overrides, m);
-    } else {
-      std::cerr << name << ": reusing the finished run in " << o.out_dir.string() << "\n";
-    }
+    const nlohmann::json m = run_or_reuse(case_path, overrides, o);
     const auto f = read_columns(o.out_dir / "forces.csv");
     const std::vector<double>& t = f.at("time");
     const std::vector<double>& fx = f.at("cylinder.fx");

@@ -1,7 +1,11 @@
 #include "curvsph/validation/run_cache.hpp"
 
 #include <fstream>
+#include <iostream>
 #include <stdexcept>
+
+#include "curvsph/io/case_file.hpp"
+#include "curvsph/io/case_key.hpp"
 
 namespace curvsph {
 namespace {
@@ -32,6 +36,21 @@ void store_run(const std::filesystem::path& dir, const std::string& case_fingerp
   const nlohmann::json j = {
       {"case_key", case_fingerprint}, {"overrides", overrides}, {"metrics", metrics}};
   std::ofstream(dir / kFile) << j.dump(2) << '\n';
+}
+
+nlohmann::json run_or_reuse(const std::filesystem::path& case_path,
+                            const std::vector<std::string>& overrides, const RunOptions& o) {
+  const std::string fingerprint = case_key(case_path);
+  nlohmann::json m = cached_run(o.out_dir, fingerprint, overrides);
+  if (!m.is_null()) {
+    std::cerr << o.out_dir.filename().string() << ": reusing the finished run in "
+              << o.out_dir.string() << "\n";
+    return m;
+  }
+  std::filesystem::create_directories(o.out_dir);
+  m = run_case(read_case(case_path, overrides), o);
+  store_run(o.out_dir, fingerprint, overrides, m);
+  return m;
 }
 
 }  // namespace curvsph

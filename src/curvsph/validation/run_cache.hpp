@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "curvsph/solver/run.hpp"
+
 namespace curvsph {
 
 // The metrics of the run kept in `dir`, or null when there is none, it is unreadable, or it
@@ -21,5 +23,10 @@ nlohmann::json cached_run(const std::filesystem::path& dir, const std::string& c
 // signal (metrics "stopped" = 1) is not kept: throws std::runtime_error, ending the study.
 void store_run(const std::filesystem::path& dir, const std::string& case_fingerprint,
                const std::vector<std::string>& overrides, const nlohmann::json& metrics);
+
+// The metrics of the run of `case_path` with `overrides` into o.out_dir: the kept one when
+// cached_run finds it (said on stderr), otherwise a fresh run, then kept with store_run.
+nlohmann::json run_or_reuse(const std::filesystem::path& case_path,
+                            const std::vector<std::string>& overrides, const RunOptions& o);
 
 }  // namespace curvsph

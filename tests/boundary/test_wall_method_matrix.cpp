@@ -206,7 +206,10 @@ Container setup(const std::string& wall) {
             ""};
   }
   if (wall == "stl_sphere") {
-    testing::write_ascii_stl((dir / "ball.stl").string(), testing::icosphere(0.1, 3));
+    // 1280 triangles, edges of about 8 degrees (1.1 dx). With 180 (21 degrees, 3 dx) the
+    // integrals missed (0.068, the row along the wall): packed with mirror_beta ghosts on the
+    // mesh's smoothed curvature, off the balance of the integrals, which see flat facets.
+    testing::write_ascii_stl((dir / "ball.stl").string(), testing::icosphere(0.1, 8));
     return {3,
             0.0125,
             0.1,
@@ -263,18 +266,12 @@ TEST_P(WallMethod, HoldsWaterAtRest) {
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
   EXPECT_EQ(m["particles_removed"].get<long>(), 0);
   // The hydrostatic pressure within 5 % of rho g H: the cells marked "works" in
-  // docs/geometry.md, every cell but two, which are held to the bound they meet (8 %) with
-  // their cause in that table's notes:
-  //  - integrals on the three `plane` walls (0.063): the two particles in the floor corners
-  //    carry it (-0.47 rho g H each), since each infinite plane's boundary elements are
-  //    clipped to the domain box only and run on behind the other plane there;
-  //    PlaneWallsEndingAtTheCorner below is the same tank with the domain box ending at the
-  //    walls.
-  //  - integrals in the STL sphere (0.068): the row along the faceted wall (mean +0.068,
-  //    57 % of the squared error), packed by mirror_beta ghosts on the mesh's estimated
-  //    curvature 0.5 to 1 dx from the sphere where the analytic sphere's row lies at 0.25 to
-  //    0.5 dx.
-  const bool miss = method == "integrals" && (wall == "plane_2d" || wall == "stl_sphere");
+  // docs/geometry.md, every cell but one, held to the bound it meets (8 %) with its cause in
+  // that table's notes: integrals on the three `plane` walls (0.063). The two particles in the
+  // floor corners carry it (-0.47 rho g H each), since each infinite plane's boundary elements
+  // are clipped to the domain box only and run on behind the other plane there;
+  // PlaneWallsEndingAtTheCorner below is the same tank with the domain box ending at the walls.
+  const bool miss = method == "integrals" && wall == "plane_2d";
   ASSERT_TRUE(m["pressure_l2_error_deep"].is_number()) << "no particle 2h below the surface";
   EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), miss ? 0.08 : 0.05);
 }

@@ -2,9 +2,11 @@
 // docs/geometry.md): water at rest under gravity in a small container made of that wall type,
 // held for a short time with each ghost map and with boundary integrals. Reference: the
 // hydrostatic field rho0 g (H - z) of the run's own analysis, RMS over the particles at least
-// one support below the surface ("deep"). Coarse (H/dx = 3 to 10) and short (2-D 0.2 s, 3-D
-// 0.05 s), one thread. The polygon (degree-1 NURBS) tanks with corners of 60, 90 and 120 degrees
-// are test_corner_tank.cpp.
+// one support below the surface ("deep"). Coarse (H/dx = 5 to 10) and short (2-D 0.2 s, 3-D
+// 0.05 s), one thread, each from the fill lattice packed inside the walls and the free surface
+// (setup.relax with free_faces: hold, 50 steps; the integrals with the node-density packing of
+// mirror_beta ghosts, as the cad_at_rest study does). The polygon (degree-1 NURBS) tanks with
+// corners of 60, 90 and 120 degrees are test_corner_tank.cpp.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -121,27 +123,33 @@ Container setup(const std::string& wall) {
             "{box: {min: [0, 0, 0], max: [0.12, 0.12, 0.1]}}",
             "[{shape: box, min: [0, 0, 0], max: [0.12, 0.12, 0.2], fluid: inside}]",
             ""};
+  // The curved 3-D walls at H/dx = 8 (R = 8 dx): at H/dx = 5 the one row at least 2h below
+  // the surface lies along the wall, and the packed sphere gave 0.034 to 0.21 at 0.05 s, above
+  // 5 % with three methods of four (docs/geometry.md).
   if (wall == "cylinder")
+    // Periodic over 0.16 = 3.2 supports (the cell list needs 3).
     return {3,
-            0.02,
+            0.0125,
             0.1,
             -0.1,
-            "{box: {min: [0, -0.1, -0.1], max: [0.24, 0.1, 0]}}",
+            "{box: {min: [0, -0.1, -0.1], max: [0.16, 0.1, 0]}}",
             "[{shape: cylinder, point: [0, 0, 0], axis: [1, 0, 0], radius: 0.1, fluid: inside}]",
-            "{min: [0, -0.2, -0.2], max: [0.24, 0.2, 0.2], periodic: [true, false, false]}"};
+            "{min: [0, -0.2, -0.2], max: [0.16, 0.2, 0.2], periodic: [true, false, false]}"};
   if (wall == "sphere")
     return {3,
-            0.02,
+            0.0125,
             0.1,
             -0.1,
             "{box: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0]}}",
             "[{shape: sphere, center: [0, 0, 0], radius: 0.1, fluid: inside}]",
             ""};
   if (wall == "torus")
-    // dx = 0.018: 2h = 0.072 below the tube radius 0.075 (a concave radius below 2h is
-    // refused at set-up, check_concave_support).
+    // dx = 0.01125 (H/dx = 6.7): 2h = 0.045 below the tube radius 0.075 (a concave radius
+    // below 2h is refused at set-up, check_concave_support). Major radius 0.15: at 0.125 the
+    // density-preserving map's depth limit at the inner equator (radius of curvature R - a =
+    // 0.05) is refused at this h.
     return {3,
-            0.018,
+            0.01125,
             0.075,
             -0.075,
             "{box: {min: [-0.25, -0.25, -0.075], max: [0.25, 0.25, 0]}}",
@@ -172,9 +180,10 @@ Container setup(const std::string& wall) {
             ""};
   }
   if (wall == "cad_cylinder") {
-    // Radius 0.1 > 2h: at 0.07 (< 2h) mirror_beta's beta = (1 + d/R)/(1 - d/R) grows without
-    // bound for the particles near the axis, each of which mirrors across the side too; the
-    // run blew up (kinetic energy 52 M g H at 0.05 s, one particle put back).
+    // H/dx = 5: each CAD closest point costs ~0.25 ms, and at H/dx = 8 one cell took 78 s
+    // (packing and run). Radius 0.1 > 2h: at 0.07 (< 2h) mirror_beta's beta = (1 + d/R)/(1 - d/R)
+    // grows without bound for the particles near the axis, each of which mirrors across the side
+    // too; the run blew up (kinetic energy 52 M g H at 0.05 s, one particle put back).
     write_step(BRepPrimAPI_MakeCylinder(0.1, 0.2).Shape(), dir / "cylinder.step");
     return {3,
             0.02,
@@ -186,9 +195,10 @@ Container setup(const std::string& wall) {
             ""};
   }
   if (wall == "stl_box") {
+    // H/dx = 6: at H/dx = 4 no particle lies 2h below the surface.
     testing::write_ascii_stl((dir / "cube.stl").string(), testing::cube_mesh(0.08, 4));
     return {3,
-            0.02,
+            0.08 / 6,
             0.08,
             -0.08,
             "{box: {min: [-0.08, -0.08, -0.08], max: [0.08, 0.08, 0]}}",
@@ -196,9 +206,12 @@ Container setup(const std::string& wall) {
             ""};
   }
   if (wall == "stl_sphere") {
-    testing::write_ascii_stl((dir / "ball.stl").string(), testing::icosphere(0.1, 3));
+    // 1280 triangles, edges of about 8 degrees (1.1 dx). With 180 (21 degrees, 3 dx) the
+    // integrals missed (0.068, the row along the wall): packed with mirror_beta ghosts on the
+    // mesh's smoothed curvature, off the balance of the integrals, which see flat facets.
+    testing::write_ascii_stl((dir / "ball.stl").string(), testing::icosphere(0.1, 8));
     return {3,
-            0.02,
+            0.0125,
             0.1,
             -0.1,
             "{box: {min: [-0.1, -0.1, -0.1], max: [0.1, 0.1, 0]}}",
@@ -224,6 +237,12 @@ YAML::Node make_case(const Container& s, const std::string& method) {
       s.dim == 2 ? "[0, -9.81]" : "[0, 0, -9.81]", boundary, t_end, t_end / 2, s.depth, s.bottom));
   root["walls"] = YAML::Load(s.walls);
   if (!s.domain.empty()) root["domain"] = YAML::Load(s.domain);
+  // Packed first: on the bare lattice a wall across it (curved) leaves the first rows off
+  // equilibrium, the integrals' too (circle 0.24 to 0.26 with ghosts and 0.068 with integrals,
+  // sphere at R = 5 dx 0.18 to 1.24, at the same times; docs/geometry.md). 50 steps do as
+  // well as 200 here (circle 0.010 to 0.018 either way); the integrals take the default
+  // packing map, boundary.map = mirror_beta (their own packing closes a box region only).
+  root["setup"] = YAML::Load("{relax: {free_faces: hold, max_steps: 50}}");
   return root;
 }
 
@@ -236,26 +255,36 @@ TEST_P(WallMethod, HoldsWaterAtRest) {
   const double t_end = s.dim == 2 ? 0.2 : 0.05;
   std::cout << fmt::format(
       "matrix {} {}: particles {} projected {} contacts {} escaped {} p_deep {:.4f} p_all {:.4f} "
-      "ke_max {:.2e}\n",
+      "ke_max {:.2e} relax_spread {:.3g}\n",
       wall, method, m["particles"].get<long>(), m["particles_projected"].get<long>(),
       m["wall_contacts"].get<long>(), m["escaped_particles"].get<long>(),
       m["pressure_l2_error_deep"].is_number() ? m["pressure_l2_error_deep"].get<double>() : -1.0,
-      m["pressure_l2_error"].get<double>(), m["kinetic_energy_max"].get<double>());
+      m["pressure_l2_error"].get<double>(), m["kinetic_energy_max"].get<double>(),
+      m.value("relax_node_density_spread", -1.0));
   EXPECT_NEAR(m["time_reached"].get<double>(), t_end, 1e-9);
   EXPECT_EQ(m["particles_projected"].get<long>(), 0);
   EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
   EXPECT_EQ(m["particles_removed"].get<long>(), 0);
-  // The hydrostatic pressure within 5 % of rho g H where the wall is flat and lies along the
-  // fill lattice (a box's corners and edges included, from `box` or a CAD solid): the cells
-  // marked "works" in docs/geometry.md. Elsewhere that table gives the measured figure and its
-  // cause (curved walls a few dx in radius across the lattice; integrals from the bare
-  // lattice, which hold the periodic floors only); asserted there: no particle crosses.
-  const bool flat = wall.rfind("plane", 0) == 0 || wall.rfind("box", 0) == 0 ||
-                    wall == "nurbs_surface" || wall == "cad_box";
-  const bool floor_only = wall == "plane_3d" || wall == "nurbs_surface";
-  if ((method != "integrals" && flat) || floor_only) {
-    EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), 0.05);
-  }
+  // The hydrostatic pressure within 5 % of rho g H: the cells marked "works" in
+  // docs/geometry.md, every cell but one, held to the bound it meets (8 %) with its cause in
+  // that table's notes: integrals on the three `plane` walls (0.063). The two particles in the
+  // floor corners carry it (-0.47 rho g H each), since each infinite plane's boundary elements
+  // are clipped to the domain box only and run on behind the other plane there;
+  // PlaneWallsEndingAtTheCorner below is the same tank with the domain box ending at the walls.
+  const bool miss = method == "integrals" && wall == "plane_2d";
+  ASSERT_TRUE(m["pressure_l2_error_deep"].is_number()) << "no particle 2h below the surface";
+  EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), miss ? 0.08 : 0.05);
+}
+
+// The cause of the `plane` miss above: the `plane` tank with integrals, its domain box ending at
+// the side walls and the floor, so that each plane's elements end where the planes meet.
+TEST(WallMethodMatrix, PlaneWallsEndingAtTheCorner) {
+  Container s = setup("plane_2d");
+  s.domain = "{min: [0, 0], max: [0.4, 0.4]}";
+  const auto m = test::run_quiet(read_case(make_case(s, "integrals"), "matrix.yaml"), 1);
+  EXPECT_EQ(m["particles_projected"].get<long>(), 0);
+  EXPECT_EQ(m["escaped_particles"].get<long>(), 0);
+  EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), 0.05);
 }
 
 const std::vector<std::string> kMethods = {"mirror", "mirror_beta", "density_preserving",

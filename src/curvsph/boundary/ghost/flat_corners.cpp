@@ -2,9 +2,12 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
+#include <utility>
 
 namespace curvsph {
 namespace {
@@ -61,6 +64,8 @@ bool real_edge(const VecD<D>& x, const FlatFace<D>* f, int n, int a, int b, doub
 }
 
 // Deepest point of y behind the faces of word w: a lower bound of its distance to the fluid.
+constexpr int kMaxWordLength = static_cast<int>(std::tuple_size_v<decltype(ReflectionWord::face)>);
+
 template <int D>
 double behind(const VecD<D>& y, const FlatFace<D>* f, const ReflectionWord& w) {
   double d = 0;
@@ -86,9 +91,19 @@ void flat_corner_images(const VecD<D>& x, const FlatFace<D>* f, int n, double su
   words.clear();
   drop.assign(static_cast<std::size_t>(n), 0);
   const double tol = 1e-9 * support;
-  const auto keep = [&](const ReflectionWord& w) {
-    if (behind<D>(reflect_word<D>(x, f, w), f, w) < support) words.push_back(w);
+  // clip >= 0: the word's image is kept only on its last face's side of the exterior
+  // bisector of the edge of faces (last, other), s_last(y) <= s_other(y) (flat_corners.hpp).
+  const auto keep = [&](const ReflectionWord& w, int other) {
+    const VecD<D> y = reflect_word<D>(x, f, w);
+    if (other >= 0) {
+      const FlatFace<D>& L = f[w.face[static_cast<std::size_t>(w.length - 1)]];
+      if (signed_distance<D>(y, L) > signed_distance<D>(y, f[other]) + tol) return;
+    }
+    if (behind<D>(y, f, w) < support) words.push_back(w);
   };
+  // Faces whose single image went at an edge with a face: (face, that face).
+  std::array<std::pair<int, int>, 16> dropped{};
+  int ndropped = 0;
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {
       const FlatFace<D>& A = f[a];
@@ -102,39 +117,71 @@ void flat_corner_images(const VecD<D>& x, const FlatFace<D>* f, int n, double su
         // Overlapping singles: each kept on its own side of the exterior bisector.
         const VecD<D> ya = x - 2.0 * signed_distance<D>(x, A) * A.normal;
         const VecD<D> yb = x - 2.0 * signed_distance<D>(x, B) * B.normal;
-        if (signed_distance<D>(ya, A) > signed_distance<D>(ya, B) + tol) drop[a] = 1;
-        if (signed_distance<D>(yb, B) > signed_distance<D>(yb, A) + tol) drop[b] = 1;
+        if (signed_distance<D>(ya, A) > signed_distance<D>(ya, B) + tol) {
+          drop[a] = 1;
+          if (ndropped < 16) dropped[static_cast<std::size_t>(ndropped++)] = {a, b};
+        }
+        if (signed_distance<D>(yb, B) > signed_distance<D>(yb, A) + tol) {
+          drop[b] = 1;
+          if (ndropped < 16) dropped[static_cast<std::size_t>(ndropped++)] = {b, a};
+        }
         continue;
       }
+      // Words up to length `order` on each side: pi/n tiles (the two longest words are one
+      // map, emitted once and whole); any other angle clips the words at the bisector.
       const double nd = std::numbers::pi / theta;
-      const int order = static_cast<int>(std::lround(nd));
-      if (order < 2 || order > 6 || std::abs(nd - order) > 1e-6 * order) continue;
+      const int nearest = static_cast<int>(std::lround(nd));
+      const bool tiles = nearest >= 2 && nearest <= 6 && std::abs(nd - nearest) <= 1e-6 * nearest;
+      const int order =
+          tiles ? nearest
+                : std::min(kMaxWordLength - 1, static_cast<int>(std::ceil(nd - 0.5 - 1e-9)));
       const std::size_t pair_begin = words.size();
       for (int len = 2; len <= order; ++len)
-        for (int start = 0; start < (len < order ? 2 : 1); ++start) {
+        for (int start = 0; start < (len < order || !tiles ? 2 : 1); ++start) {
           ReflectionWord w;
           w.length = len;
           for (int k = 0; k < len; ++k)
             w.face[static_cast<std::size_t>(k)] =
                 static_cast<std::int8_t>(((k + start) % 2 == 0) ? a : b);
-          keep(w);
+          keep(w, tiles ? -1 : (w.face[static_cast<std::size_t>(len - 1)] == a ? b : a));
         }
       const std::size_t pair_end = words.size();
       if constexpr (D == 3) {
         // A third face perpendicular to both: each image of the pair reflected across it
         // (a perpendicular pair takes only c > b, so that a box corner's triple comes once).
-        for (int k = order == 2 ? b + 1 : 0; k < n; ++k) {
+        // Reflecting across it leaves s_a and s_b as they were: the clip carries over.
+        for (int k = tiles && order == 2 ? b + 1 : 0; k < n; ++k) {
           if (k == a || k == b || !perpendicular<D>(f[k], A) || !perpendicular<D>(f[k], B))
             continue;
           for (std::size_t q = pair_begin; q < pair_end; ++q) {
             ReflectionWord w = words[q];
-            if (w.length >= 8) continue;
+            if (w.length >= kMaxWordLength) continue;
             w.face[static_cast<std::size_t>(w.length++)] = static_cast<std::int8_t>(k);
-            keep(w);
+            keep(w, -1);
           }
         }
       }
     }
+  // A single dropped at an edge (a, b) takes its image across a face k perpendicular to both
+  // with it: the double word {a, k} of that perpendicular pair (the edge a-b meeting a floor k
+  // at right angles: the floor's reflection of the clipped single is clipped alike).
+  if (ndropped > 0)
+    words.erase(std::remove_if(words.begin(), words.end(),
+                               [&](const ReflectionWord& w) {
+                                 if (w.length != 2) return false;
+                                 for (int q = 0; q < ndropped; ++q) {
+                                   const auto [p, other] = dropped[static_cast<std::size_t>(q)];
+                                   for (int e = 0; e < 2; ++e) {
+                                     const int k = w.face[static_cast<std::size_t>(1 - e)];
+                                     if (w.face[static_cast<std::size_t>(e)] == p && k != other &&
+                                         perpendicular<D>(f[k], f[p]) &&
+                                         perpendicular<D>(f[k], f[other]))
+                                       return true;
+                                   }
+                                 }
+                                 return false;
+                               }),
+                words.end());
 }
 
 template void flat_corner_images<2>(const Vec2d&, const FlatFace<2>*, int, double,

@@ -1,7 +1,8 @@
 // `curvsph validate cad_at_rest`: water held at rest under gravity inside solids with sharp
 // edges, every boundary method (issue 32 items 3 and 5). Solids:
 //  - 2-D tanks whose wall is one polygon (a degree-1 NURBS curve: the sides meet the floor at
-//    60, 90 and 120 degrees, concave corners), depth H = 0.5 m, dx = H/20;
+//    60, 75, 90, 100 and 120 degrees, concave corners; 75 and 100 are angles that no
+//    reflection group tiles), depth H = 0.5 m, dx = H/20;
 //  - two 2-D controls: a V whose 45 degree walls meet at 90 degrees, and a circle;
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
@@ -33,6 +34,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph/validation/run_cache.hpp"
 #include "curvsph/validation/study.hpp"
 
 namespace curvsph {
@@ -128,8 +130,7 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
   s.dim = 3;
   s.depth = H;
   s.dx = H / 6;
-  // Absolute: the case names its file relative to the case's own folder otherwise.
-  const auto file = std::filesystem::absolute(dir / (name + ".step"));
+  const auto file = dir / (name + ".step");
   if (name == "box") {
     write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.08, 0.08, 2 * H)).Shape(), file);
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
@@ -140,7 +141,10 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
     s.region = fmt::format("{{box: {{min: [-0.06, -0.06, 0], max: [0.06, 0.06, {}]}}}}", H);
     s.describe = "STEP upright cylinder, radius 0.06 m, height 0.16 m (side, floor, lid)";
   }
-  s.walls = YAML::Load(fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", file.string()));
+  // Relative to the case file, which the study writes into runs/NAME/ (a path that does not
+  // depend on the checkout, so that the kept runs' case fingerprints hold in any of them).
+  s.walls = YAML::Load(
+      fmt::format("[{{shape: cad, file: '../../solids/{}.step', fluid: inside}}]", name));
   return s;
 }
 
@@ -181,7 +185,9 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
   // 3-D: half the time (the CAD closest points cost ~0.25 ms a particle-step on one core).
   const double t2 = ctx.quick ? 0.1 : 1.0, t3 = t2 / 2;
   std::vector<Solid> solids = {polygon_tank(60),
+                               polygon_tank(75),
                                polygon_tank(90),
+                               polygon_tank(100),
                                polygon_tank(120),
                                control("polygon_v90"),
                                control("circle"),
@@ -200,25 +206,26 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
     const double t_end = s.dim == 2 ? t2 : t3;
     for (const Method& meth : kMethods) {
       const std::string tag = s.name + "_" + meth.name;
-      Case c;
-      try {
-        c = read_case(make_case(s, meth, t_end), ctx.out_dir / (tag + ".yaml"));
-      } catch (const InputError& e) {
-        table +=
-            fmt::format("| {} | {} | refused: {} | | | | | | | | |\n", s.name, meth.name, e.what());
-        continue;
-      }
       RunOptions o;
       o.out_dir = ctx.out_dir / "runs" / tag;
       o.threads = ctx.threads;
       o.progress = true;
       o.overwrite = true;
+      // The case is written into its run's folder: run_or_reuse (run_cache.hpp) reuses the
+      // kept run while that file is unchanged, so that adding a solid runs only its own rows.
+      const auto case_path = o.out_dir / "case.yaml";
+      std::filesystem::create_directories(o.out_dir);
+      {
+        YAML::Emitter e;
+        e << make_case(s, meth, t_end);
+        std::ofstream(case_path) << e.c_str() << "\n";
+      }
       nlohmann::json m;
       try {
-        m = run_case(c, o);
+        m = run_or_reuse(case_path, {}, o);
       } catch (const InputError& e) {
-        table += fmt::format("| {} | {} | refused at set-up: {} | | | | | | | | |\n", s.name,
-                             meth.name, e.what());
+        table +=
+            fmt::format("| {} | {} | refused: {} | | | | | | | | |\n", s.name, meth.name, e.what());
         continue;
       } catch (const InstabilityError& e) {
         std::ifstream in(o.out_dir / "metrics_unstable.json");
@@ -257,11 +264,15 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
                            p_deep <= 0.02 && proj == 0 && reached >= t_end - 1e-9});
     }
   }
+  csv.close();  // the plot reads it
   run_plot_script(ctx, "plot_cad_at_rest.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Water at rest in solids with sharp edges\n\n"
      << "Regenerate with `build/curvsph validate cad_at_rest --threads 1`"
      << (ctx.quick ? " (these figures: `--quick`, 0.1 s in 2-D, 0.05 s in 3-D)" : "")
+     << "; each run's case is written to runs/NAME/case.yaml and a finished run is kept "
+        "(runs/NAME/study_run.json) and reused while that file is unchanged: delete a run's "
+        "folder to redo it with a new build"
      << ". Each solid is filled with water from the hydrostatic state and held under gravity for "
      << t2 << " s (2-D) or " << t3
      << " s (3-D) with the three ghost maps and with boundary integrals (geometric Shepard "

@@ -63,14 +63,129 @@ bool real_edge(const VecD<D>& x, const FlatFace<D>* f, int n, int a, int b, doub
   }
 }
 
-// Deepest point of y behind the faces of word w: a lower bound of its distance to the fluid.
 constexpr int kMaxWordLength = static_cast<int>(std::tuple_size_v<decltype(ReflectionWord::face)>);
 
+// Deepest point of y behind the faces of word w: a lower bound of its distance to the fluid.
 template <int D>
 double behind(const VecD<D>& y, const FlatFace<D>* f, const ReflectionWord& w) {
   double d = 0;
   for (int k = 0; k < w.length; ++k) d = std::max(d, -signed_distance<D>(y, f[w.face[k]]));
   return d;
+}
+
+// Whether w is the canonical word of its image y = w(x) among the faces t[0..3): folding y back
+// (reflecting it across the face it lies deepest behind, until it is in front of all three)
+// undoes w letter by letter. Every point outside the cone of the three faces has one such
+// word, so the images kept by this test cover the outside once (flat_corners.hpp).
+template <int D>
+bool canonical(const VecD<D>& y, const FlatFace<D>* f, const std::array<int, 3>& t,
+               const ReflectionWord& w, double tol) {
+  VecD<D> z = y;
+  for (int step = 0;; ++step) {
+    int deepest = -1;
+    double s_min = -tol;
+    for (const int q : t) {
+      const double s = signed_distance<D>(z, f[q]);
+      if (s < s_min) {
+        s_min = s;
+        deepest = q;
+      }
+    }
+    if (deepest < 0) return step == w.length;
+    if (step >= w.length || w.face[static_cast<std::size_t>(w.length - 1 - step)] != deepest)
+      return false;
+    z -= 2.0 * s_min * f[deepest].normal;
+  }
+}
+
+// Corners of three faces a, b, c none of which is perpendicular to both others (a box corner,
+// or a wedge's edge meeting an end wall at right angles, is the product construction above):
+// the images of every word over the three (no letter twice in a row, up to kMaxWordLength
+// letters), each kept only when canonical; the pairs' words and singles of these faces that
+// are not canonical go. 3-D only (three lines of a plane have no common point).
+template <int D>
+void trihedral_corners(const VecD<D>& x, const FlatFace<D>* f, int n, double support,
+                       std::vector<ReflectionWord>& words, std::vector<char>& drop) {
+  if constexpr (D == 3) {
+    const double tol = 1e-9 * support;
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        for (int c = b + 1; c < n; ++c) {
+          const std::array<int, 3> t{a, b, c};
+          bool skip = false;
+          for (int q = 0; q < 3 && !skip; ++q) {
+            const FlatFace<D>& P = f[t[static_cast<std::size_t>(q)]];
+            const FlatFace<D>& Q = f[t[static_cast<std::size_t>((q + 1) % 3)]];
+            const FlatFace<D>& R = f[t[static_cast<std::size_t>((q + 2) % 3)]];
+            skip = (P.group >= 0 && P.group == Q.group) ||
+                   std::abs(P.normal.dot(Q.normal)) > 1.0 - 1e-12 ||
+                   (perpendicular<D>(P, Q) && perpendicular<D>(P, R));
+          }
+          if (skip) continue;
+          // The vertex: the three planes' common point, a real corner of the fluid (on the
+          // fluid side of every other face) and within reach (images keep |y - v| = |x - v|).
+          Eigen::Matrix3d N;
+          Eigen::Vector3d rhs;
+          for (int q = 0; q < 3; ++q) {
+            const FlatFace<D>& F = f[t[static_cast<std::size_t>(q)]];
+            N.row(q) = F.normal.transpose();
+            rhs[q] = F.normal.dot(F.foot);
+          }
+          if (std::abs(N.determinant()) < 1e-6) continue;
+          const Vec3d v = N.partialPivLu().solve(rhs);
+          if ((x - v).norm() > 2.0 * support) continue;
+          bool real = true;
+          for (int k = 0; k < n && real; ++k)
+            if (k != a && k != b && k != c) real = signed_distance<D>(v, f[k]) >= -tol;
+          if (!real) continue;
+          const auto within = [&](const ReflectionWord& w) {
+            for (int k = 0; k < w.length; ++k)
+              if (w.face[static_cast<std::size_t>(k)] != a &&
+                  w.face[static_cast<std::size_t>(k)] != b &&
+                  w.face[static_cast<std::size_t>(k)] != c)
+                return false;
+            return true;
+          };
+          // The pairs' words among these faces are replaced by the canonical ones.
+          words.erase(std::remove_if(words.begin(), words.end(), within), words.end());
+          for (const int q : t) {
+            ReflectionWord w;
+            w.length = 1;
+            w.face[0] = static_cast<std::int8_t>(q);
+            if (!canonical<D>(reflect_word<D>(x, f, w), f, t, w, tol))
+              drop[static_cast<std::size_t>(q)] = 1;
+          }
+          // Words of length 2 .. kMaxWordLength, depth first in lexicographic order.
+          std::array<int, kMaxWordLength> letter{};
+          ReflectionWord w;
+          w.length = 1;
+          letter[0] = 0;
+          while (w.length > 0) {
+            const std::size_t top = static_cast<std::size_t>(w.length - 1);
+            if (letter[top] >= 3) {  // exhausted: back up
+              --w.length;
+              if (w.length > 0) ++letter[static_cast<std::size_t>(w.length - 1)];
+              continue;
+            }
+            if (top > 0 && letter[top] == letter[top - 1]) {
+              ++letter[top];
+              continue;
+            }
+            w.face[top] = static_cast<std::int8_t>(t[static_cast<std::size_t>(letter[top])]);
+            const VecD<D> y = reflect_word<D>(x, f, w);
+            // Every word is tested (3 * 2^7 of the longest; a particle meets such a corner
+            // only within two supports of it).
+            if (w.length >= 2 && canonical<D>(y, f, t, w, tol) && behind<D>(y, f, w) < support)
+              words.push_back(w);
+            if (w.length < kMaxWordLength) {
+              letter[static_cast<std::size_t>(w.length)] = 0;
+              ++w.length;
+            } else {
+              ++letter[top];
+            }
+          }
+        }
+  }
 }
 
 }  // namespace
@@ -182,6 +297,7 @@ void flat_corner_images(const VecD<D>& x, const FlatFace<D>* f, int n, double su
                                  return false;
                                }),
                 words.end());
+  trihedral_corners<D>(x, f, n, support, words, drop);
 }
 
 template void flat_corner_images<2>(const Vec2d&, const FlatFace<2>*, int, double,

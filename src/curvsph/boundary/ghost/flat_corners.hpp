@@ -33,7 +33,16 @@
 // group is the dihedral one times C's reflection; three mutually perpendicular faces: the
 // triple reflection of a box corner), once per triple; C's reflection keeps s_A and s_B, so
 // a cut image stays cut, and the double image AC of a single A cut at the edge A-B goes too.
-// Three faces not mutually perpendicular get the images of each pair only.
+// Three faces meeting at a vertex, none perpendicular to both others (a tetrahedron's vertex,
+// a V trough's edge meeting a leaning end wall): no product of groups tiles space there, and
+// the pairs' images leave the region behind the vertex short (a sum of 0.66 instead of 1 at
+// a regular tetrahedron's vertex). Every point y outside the fluid cone has a canonical word:
+// fold y back, reflecting it across the face it lies deepest behind until it is in front of
+// all three, and read the reflections backwards. The images of x under every word over the
+// three faces (up to 8 letters; the tetrahedron's cone needs 6) are kept only where the word
+// is the canonical one of the image, and the pairs' words and singles among these faces that
+// are not canonical go: each outside point is then covered once. For two faces the fold is
+// the bisector rule above (the side of the exterior bisector says which face is deeper).
 // The edge counts only where it is a real edge of the fluid region: some of it lies on the
 // fluid side of every other face in the list (two lines that meet behind a third face make no
 // corner). Faces of one polygon (same `group`) are skipped: facet_images.hpp

@@ -6,8 +6,11 @@
 //  - two 2-D controls: a V whose 45 degree walls meet at 90 degrees, and a circle;
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
-//    plane-cylinder), depth H = 0.08 m, dx = H/6.
-// The 2-D solids are packed first (setup.relax with free_faces: hold; the integrals too).
+//    plane-cylinder), depth H = 0.08 m, dx = H/6, and two V troughs (prisms of a triangle,
+//    planar sides meeting at 60 and 100 degrees along the bottom edge, perpendicular end
+//    caps: edges and triple corners of flat faces, boundary/ghost/flat_corners.hpp), dx = H/8.
+// The 2-D solids and the prisms are packed first (setup.relax with free_faces: hold; the
+// integrals too).
 // 2-D runs 1 s (t sqrt(g/H) = 4.4), 3-D 0.5 s (5.5; the CAD closest points make 1 s too long
 // for the study's 20 min on one thread); --quick: a tenth. Each from the hydrostatic start
 // with the three ghost maps and with boundary integrals (geometric Shepard factor; the
@@ -18,12 +21,16 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TopoDS_Face.hxx>
 #include <UnitsMethods.hxx>
 #include <algorithm>
 #include <cmath>
@@ -61,6 +68,7 @@ struct Solid {
   std::string name;
   int dim;
   double depth, dx, bottom = 0;
+  bool pack = false;  // setup.relax first (free_faces: hold)
   YAML::Node walls;
   std::string region;  // the fluid region (clipped by the walls)
   std::string describe;
@@ -73,6 +81,7 @@ Solid polygon_tank(int theta_deg) {
   Solid s;
   s.name = fmt::format("polygon_{}deg", theta_deg);
   s.dim = 2;
+  s.pack = true;
   s.depth = H;
   s.dx = H / 20;
   s.walls = YAML::Load(
@@ -104,6 +113,7 @@ Solid control(const std::string& name) {
   Solid s;
   s.name = name;
   s.dim = 2;
+  s.pack = true;
   s.depth = 0.5;
   s.dx = 0.025;
   if (name == "polygon_v90") {
@@ -135,6 +145,27 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
     write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.08, 0.08, 2 * H)).Shape(), file);
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
     s.describe = "STEP box 0.08 x 0.08 x 0.16 m (6 planar faces)";
+  } else if (name.rfind("prism_", 0) == 0) {
+    // A V trough: the triangle (0, 0), (-w, T), (w, T) in the x-z plane, its bottom edge of
+    // angle theta = 2 atan(w/T), extruded 0.08 m along y (end caps perpendicular to the
+    // sides: the edge meets them at two triple corners). H/dx = 8: the V holds ~30
+    // particles a slice.
+    const int theta = std::stoi(name.substr(6));
+    const double T = 2 * H, w = T * std::tan(0.5 * theta * M_PI / 180.0), L = 0.08;
+    s.dx = H / 8;
+    s.pack = true;
+    const TopoDS_Face tri =
+        BRepBuilderAPI_MakeFace(
+            BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(w, 0, T), gp_Pnt(-w, 0, T), true)
+                .Wire())
+            .Face();
+    write_step(BRepPrimAPI_MakePrism(tri, gp_Vec(0, L, 0)).Shape(), file);
+    s.region =
+        fmt::format("{{box: {{min: [{:.12g}, 0, 0], max: [{:.12g}, {}, {}]}}}}", -w, w, L, H);
+    s.describe = fmt::format(
+        "STEP prism: a V trough whose planar sides meet at {} deg along its bottom edge, 0.08 m "
+        "long between perpendicular end caps, {:.3f} m wide at the top (5 planar faces)",
+        theta, 2 * w);
   } else {
     // Radius 0.06 > 2h = 0.053: a concave radius below 2h is refused with ghosts.
     write_step(BRepPrimAPI_MakeCylinder(0.06, 2 * H).Shape(), file);
@@ -167,9 +198,11 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
   // off balance (findings.md). The integrals too: their own packing closes a box region only
   // (setup/relax_integrals.hpp), so they start from the node-density packing of the default
   // ghost map (setup.relax.map defaults to boundary.map, mirror_beta): on the 60 degree tank
-  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The 3-D CAD
-  // solids keep the bare lattice (2000 packing steps of CAD closest points).
-  if (s.dim == 2) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
+  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The CAD box and
+  // cylinder keep the bare lattice (2000 packing steps of CAD closest points); the prisms are
+  // packed (2 s: their V packs in ~100 steps; bare, the 60 degree V gave 0.376 deep with
+  // 7006 wall contacts at H/dx = 8, packed 0.043).
+  if (s.pack) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
   return root;
 }
 
@@ -192,7 +225,9 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
                                control("polygon_v90"),
                                control("circle"),
                                cad_solid("box", ctx.out_dir / "solids"),
-                               cad_solid("cylinder", ctx.out_dir / "solids")};
+                               cad_solid("cylinder", ctx.out_dir / "solids"),
+                               cad_solid("prism_60", ctx.out_dir / "solids"),
+                               cad_solid("prism_100", ctx.out_dir / "solids")};
   StudyResult r;
   std::ofstream csv(ctx.out_dir / "runs.csv");
   csv << "solid,method,dx,depth,t_end,time_reached,particles,particles_projected,"
@@ -283,7 +318,7 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
         "The 2-D solids start from the lattice packed inside the walls and the free surface "
         "(`setup: {relax: {free_faces: hold}}`, the node-density packing of the mirror_beta "
         "ghost map, with the integrals too: their own packing closes a box region only); the "
-        "3-D solids from the bare lattice. "
+        "CAD box and cylinder from the bare lattice, the CAD prisms packed like the 2-D solids. "
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
         "(deep) and over all. At H/dx = 6 (3-D) 'deep' is the two rows above the floor; the "

@@ -155,7 +155,10 @@ void trihedral_corners(const VecD<D>& x, const FlatFace<D>* f, int n, double sup
             if (!canonical<D>(reflect_word<D>(x, f, w), f, t, w, tol))
               drop[static_cast<std::size_t>(q)] = 1;
           }
-          // Words of length 2 .. kMaxWordLength, depth first in lexicographic order.
+          // Words of length 2 .. kMaxWordLength, depth first in lexicographic order. The fold
+          // of a canonical word's image passes through its prefix's image (its first step
+          // undoes the last letter), so the prefix is canonical too: a word that is not
+          // canonical is not extended.
           std::array<int, kMaxWordLength> letter{};
           ReflectionWord w;
           w.length = 1;
@@ -173,11 +176,9 @@ void trihedral_corners(const VecD<D>& x, const FlatFace<D>* f, int n, double sup
             }
             w.face[top] = static_cast<std::int8_t>(t[static_cast<std::size_t>(letter[top])]);
             const VecD<D> y = reflect_word<D>(x, f, w);
-            // Every word is tested (3 * 2^7 of the longest; a particle meets such a corner
-            // only within two supports of it).
-            if (w.length >= 2 && canonical<D>(y, f, t, w, tol) && behind<D>(y, f, w) < support)
-              words.push_back(w);
-            if (w.length < kMaxWordLength) {
+            const bool ok = canonical<D>(y, f, t, w, tol);
+            if (ok && w.length >= 2 && behind<D>(y, f, w) < support) words.push_back(w);
+            if (ok && w.length < kMaxWordLength) {
               letter[static_cast<std::size_t>(w.length)] = 0;
               ++w.length;
             } else {

@@ -19,7 +19,7 @@ def main():
         rows = list(csv.DictReader(f))
     solids = list(dict.fromkeys(r["solid"] for r in rows))
     methods = list(dict.fromkeys(r["method"] for r in rows))
-    fig, ax = plt.subplots(figsize=(10, 4))
+    fig, ax = plt.subplots(figsize=(max(10.0, 1.5 * len(solids)), 4))
     w = 0.8 / max(len(methods), 1)
     for k, m in enumerate(methods):
         for i, s in enumerate(solids):

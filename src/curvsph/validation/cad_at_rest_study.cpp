@@ -1,12 +1,16 @@
 // `curvsph validate cad_at_rest`: water held at rest under gravity inside solids with sharp
 // edges, every boundary method (issue 32 items 3 and 5). Solids:
 //  - 2-D tanks whose wall is one polygon (a degree-1 NURBS curve: the sides meet the floor at
-//    60, 90 and 120 degrees, concave corners), depth H = 0.5 m, dx = H/20;
+//    60, 75, 90, 100 and 120 degrees, concave corners; 75 and 100 are angles that no
+//    reflection group tiles), depth H = 0.5 m, dx = H/20;
 //  - two 2-D controls: a V whose 45 degree walls meet at 90 degrees, and a circle;
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
-//    plane-cylinder), depth H = 0.08 m, dx = H/6.
-// The 2-D solids are packed first (setup.relax with free_faces: hold; the integrals too).
+//    plane-cylinder), depth H = 0.08 m, dx = H/6, and two V troughs (prisms of a triangle,
+//    planar sides meeting at 60 and 100 degrees along the bottom edge, perpendicular end
+//    caps: edges and triple corners of flat faces, boundary/ghost/flat_corners.hpp), dx = H/8.
+// The 2-D solids and the prisms are packed first (setup.relax with free_faces: hold; the
+// integrals too).
 // 2-D runs 1 s (t sqrt(g/H) = 4.4), 3-D 0.5 s (5.5; the CAD closest points make 1 s too long
 // for the study's 20 min on one thread); --quick: a tenth. Each from the hydrostatic start
 // with the three ghost maps and with boundary integrals (geometric Shepard factor; the
@@ -17,12 +21,16 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TopoDS_Face.hxx>
 #include <UnitsMethods.hxx>
 #include <algorithm>
 #include <cmath>
@@ -33,6 +41,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
 #include "curvsph/solver/run.hpp"
+#include "curvsph/validation/run_cache.hpp"
 #include "curvsph/validation/study.hpp"
 
 namespace curvsph {
@@ -59,6 +68,7 @@ struct Solid {
   std::string name;
   int dim;
   double depth, dx, bottom = 0;
+  bool pack = false;  // setup.relax first (free_faces: hold)
   YAML::Node walls;
   std::string region;  // the fluid region (clipped by the walls)
   std::string describe;
@@ -71,6 +81,7 @@ Solid polygon_tank(int theta_deg) {
   Solid s;
   s.name = fmt::format("polygon_{}deg", theta_deg);
   s.dim = 2;
+  s.pack = true;
   s.depth = H;
   s.dx = H / 20;
   s.walls = YAML::Load(
@@ -102,6 +113,7 @@ Solid control(const std::string& name) {
   Solid s;
   s.name = name;
   s.dim = 2;
+  s.pack = true;
   s.depth = 0.5;
   s.dx = 0.025;
   if (name == "polygon_v90") {
@@ -128,19 +140,42 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
   s.dim = 3;
   s.depth = H;
   s.dx = H / 6;
-  // Absolute: the case names its file relative to the case's own folder otherwise.
-  const auto file = std::filesystem::absolute(dir / (name + ".step"));
+  const auto file = dir / (name + ".step");
   if (name == "box") {
     write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.08, 0.08, 2 * H)).Shape(), file);
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
     s.describe = "STEP box 0.08 x 0.08 x 0.16 m (6 planar faces)";
+  } else if (name.rfind("prism_", 0) == 0) {
+    // A V trough: the triangle (0, 0), (-w, T), (w, T) in the x-z plane, its bottom edge of
+    // angle theta = 2 atan(w/T), extruded 0.08 m along y (end caps perpendicular to the
+    // sides: the edge meets them at two triple corners). H/dx = 8: the V holds ~30
+    // particles a slice.
+    const int theta = std::stoi(name.substr(6));
+    const double T = 2 * H, w = T * std::tan(0.5 * theta * M_PI / 180.0), L = 0.08;
+    s.dx = H / 8;
+    s.pack = true;
+    const TopoDS_Face tri =
+        BRepBuilderAPI_MakeFace(
+            BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(w, 0, T), gp_Pnt(-w, 0, T), true)
+                .Wire())
+            .Face();
+    write_step(BRepPrimAPI_MakePrism(tri, gp_Vec(0, L, 0)).Shape(), file);
+    s.region =
+        fmt::format("{{box: {{min: [{:.12g}, 0, 0], max: [{:.12g}, {}, {}]}}}}", -w, w, L, H);
+    s.describe = fmt::format(
+        "STEP prism: a V trough whose planar sides meet at {} deg along its bottom edge, 0.08 m "
+        "long between perpendicular end caps, {:.3f} m wide at the top (5 planar faces)",
+        theta, 2 * w);
   } else {
     // Radius 0.06 > 2h = 0.053: a concave radius below 2h is refused with ghosts.
     write_step(BRepPrimAPI_MakeCylinder(0.06, 2 * H).Shape(), file);
     s.region = fmt::format("{{box: {{min: [-0.06, -0.06, 0], max: [0.06, 0.06, {}]}}}}", H);
     s.describe = "STEP upright cylinder, radius 0.06 m, height 0.16 m (side, floor, lid)";
   }
-  s.walls = YAML::Load(fmt::format("[{{shape: cad, file: '{}', fluid: inside}}]", file.string()));
+  // Relative to the case file, which the study writes into runs/NAME/ (a path that does not
+  // depend on the checkout, so that the kept runs' case fingerprints hold in any of them).
+  s.walls = YAML::Load(
+      fmt::format("[{{shape: cad, file: '../../solids/{}.step', fluid: inside}}]", name));
   return s;
 }
 
@@ -163,9 +198,11 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
   // off balance (findings.md). The integrals too: their own packing closes a box region only
   // (setup/relax_integrals.hpp), so they start from the node-density packing of the default
   // ghost map (setup.relax.map defaults to boundary.map, mirror_beta): on the 60 degree tank
-  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The 3-D CAD
-  // solids keep the bare lattice (2000 packing steps of CAD closest points).
-  if (s.dim == 2) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
+  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The CAD box and
+  // cylinder keep the bare lattice (2000 packing steps of CAD closest points); the prisms are
+  // packed (2 s: their V packs in ~100 steps; bare, the 60 degree V gave 0.376 deep with
+  // 7006 wall contacts at H/dx = 8, packed 0.043).
+  if (s.pack) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
   return root;
 }
 
@@ -181,12 +218,16 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
   // 3-D: half the time (the CAD closest points cost ~0.25 ms a particle-step on one core).
   const double t2 = ctx.quick ? 0.1 : 1.0, t3 = t2 / 2;
   std::vector<Solid> solids = {polygon_tank(60),
+                               polygon_tank(75),
                                polygon_tank(90),
+                               polygon_tank(100),
                                polygon_tank(120),
                                control("polygon_v90"),
                                control("circle"),
                                cad_solid("box", ctx.out_dir / "solids"),
-                               cad_solid("cylinder", ctx.out_dir / "solids")};
+                               cad_solid("cylinder", ctx.out_dir / "solids"),
+                               cad_solid("prism_60", ctx.out_dir / "solids"),
+                               cad_solid("prism_100", ctx.out_dir / "solids")};
   StudyResult r;
   std::ofstream csv(ctx.out_dir / "runs.csv");
   csv << "solid,method,dx,depth,t_end,time_reached,particles,particles_projected,"
@@ -200,25 +241,26 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
     const double t_end = s.dim == 2 ? t2 : t3;
     for (const Method& meth : kMethods) {
       const std::string tag = s.name + "_" + meth.name;
-      Case c;
-      try {
-        c = read_case(make_case(s, meth, t_end), ctx.out_dir / (tag + ".yaml"));
-      } catch (const InputError& e) {
-        table +=
-            fmt::format("| {} | {} | refused: {} | | | | | | | | |\n", s.name, meth.name, e.what());
-        continue;
-      }
       RunOptions o;
       o.out_dir = ctx.out_dir / "runs" / tag;
       o.threads = ctx.threads;
       o.progress = true;
       o.overwrite = true;
+      // The case is written into its run's folder: run_or_reuse (run_cache.hpp) reuses the
+      // kept run while that file is unchanged, so that adding a solid runs only its own rows.
+      const auto case_path = o.out_dir / "case.yaml";
+      std::filesystem::create_directories(o.out_dir);
+      {
+        YAML::Emitter e;
+        e << make_case(s, meth, t_end);
+        std::ofstream(case_path) << e.c_str() << "\n";
+      }
       nlohmann::json m;
       try {
-        m = run_case(c, o);
+        m = run_or_reuse(case_path, {}, o);
       } catch (const InputError& e) {
-        table += fmt::format("| {} | {} | refused at set-up: {} | | | | | | | | |\n", s.name,
-                             meth.name, e.what());
+        table +=
+            fmt::format("| {} | {} | refused: {} | | | | | | | | |\n", s.name, meth.name, e.what());
         continue;
       } catch (const InstabilityError& e) {
         std::ifstream in(o.out_dir / "metrics_unstable.json");
@@ -257,11 +299,15 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
                            p_deep <= 0.02 && proj == 0 && reached >= t_end - 1e-9});
     }
   }
+  csv.close();  // the plot reads it
   run_plot_script(ctx, "plot_cad_at_rest.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Water at rest in solids with sharp edges\n\n"
      << "Regenerate with `build/curvsph validate cad_at_rest --threads 1`"
      << (ctx.quick ? " (these figures: `--quick`, 0.1 s in 2-D, 0.05 s in 3-D)" : "")
+     << "; each run's case is written to runs/NAME/case.yaml and a finished run is kept "
+        "(runs/NAME/study_run.json) and reused while that file is unchanged: delete a run's "
+        "folder to redo it with a new build"
      << ". Each solid is filled with water from the hydrostatic state and held under gravity for "
      << t2 << " s (2-D) or " << t3
      << " s (3-D) with the three ghost maps and with boundary integrals (geometric Shepard "
@@ -272,7 +318,7 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
         "The 2-D solids start from the lattice packed inside the walls and the free surface "
         "(`setup: {relax: {free_faces: hold}}`, the node-density packing of the mirror_beta "
         "ghost map, with the integrals too: their own packing closes a box region only); the "
-        "3-D solids from the bare lattice. "
+        "CAD box and cylinder from the bare lattice, the CAD prisms packed like the 2-D solids. "
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
         "(deep) and over all. At H/dx = 6 (3-D) 'deep' is the two rows above the floor; the "

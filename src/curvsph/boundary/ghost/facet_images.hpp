@@ -15,7 +15,11 @@
 //    ("multiple mirroring"); the 2n - 3 images beyond the two singles are added (90 degrees:
 //    the point reflection through v, as box corners have);
 //  - other theta < 2 pi/3: the singles leave a gap of 2 pi - 3 theta around the exterior
-//    bisector that no reflection fills exactly; it is left empty (the support is short there).
+//    bisector. The longer words of the two reflections (AB, BA, ABA, ... up to length
+//    K = ceil(pi/theta - 1/2)) wind further round from each face; each image is kept only on
+//    its last face's side of the exterior bisector, as the singles above are, so that the
+//    exterior is covered once (flat_corners.hpp has the sectors; below about 24 degrees K is
+//    capped at 7 and a gap stays).
 // At a convex corner (theta > pi, fluid outside) a single image is kept only while x projects
 // onto its own face; x in the vertex's own wedge (projecting beyond both faces) gets the
 // point reflection 2 v - x, the mirror of its closest point (the vertex), as box edges give.

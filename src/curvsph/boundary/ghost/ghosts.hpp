@@ -12,8 +12,9 @@
 //    the images of flat_corners.hpp: at 180/n degrees (90, 60, 45, ...) the multiply
 //    reflected ghosts of the dihedral group (90 degrees: the double reflection; a third face
 //    perpendicular to both adds their reflections across it, the triple one of a box corner),
-//    above 120 degrees the single ghosts cut at the exterior bisector; other angles keep
-//    the single reflections only. A polygon's own corners are facet_images.hpp's.
+//    above 120 degrees the single ghosts cut at the exterior bisector; other angles the
+//    words of the two reflections that wind round the exterior from each face, cut at the
+//    exterior bisector. A polygon's own corners are facet_images.hpp's.
 // Ghosts are ordered by source particle, then wall, then face, then corner combinations;
 // the order does not depend on the thread count.
 //

@@ -19,11 +19,19 @@
 // segments clipped, 3-D polygons clipped by Sutherland & Hodgman, a result of more than 4
 // vertices fanned into triangles. Against a curved wall the cut runs along the chord between
 // the two edge crossings instead of the curve: the area error is the segment between chord and
-// curve, about L^3 kappa / 12 per cut element of side L (measured: tests/boundary/
-// test_wall_clip.cpp). A curved element (a cylinder patch, gap > 0) is clipped as its polygon;
-// its area is the true area scaled by the clipped share of the polygon's and its centre is
-// moved with the polygon's centroid (exact for a cut across the axis of a cylinder, where the
-// share is that of the axial extent).
+// curve, c^3 kappa / 12 per chord c, about pi L^2 / 6 per cut curve for elements of side L
+// whatever its radius (measured 4.96e-3 for a sphere sunk into a floor at L = 0.1, 0.2 % of
+// the disc it cuts out; tests/boundary/test_wall_clip.cpp). A curved wall bulging through an
+// element's edge between two vertices outside it is not seen (the element is kept whole): its
+// reach into the element is at most the sagitta L^2 kappa / 8. A curved element (a cylinder patch,
+// gap > 0) is clipped as its polygon; its area is the true area scaled by the clipped share of the
+// polygon's and its centre is moved with the polygon's centroid (exact for a cut across the axis of
+// a cylinder, where the share is that of the axial extent).
+//
+// The other walls are taken where they are, not as periodic images: an obstacle across a
+// periodic seam cuts the floor on its own side of the seam only (draw it on both sides, as
+// walls crossing a seam are drawn). Cost: one closest-point query per element and clipping
+// wall (per vertex where the element lies within its own size of that wall), at set-up.
 #include <vector>
 
 #include "curvsph/boundary/integrals/boundary_elements.hpp"

@@ -16,6 +16,7 @@
 
 #include "curvsph/app/command.hpp"
 #include "curvsph/boundary/integrals/shepard.hpp"
+#include "curvsph/boundary/integrals/wall_clip.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
@@ -61,7 +62,10 @@ std::vector<double> compute(const WallSet<D>& walls, const std::vector<VecD<D>>&
   std::vector<VecD<D>> fluid;
   std::vector<double> volumes;
   if (mode == ShepardMode::geometric || mode == ShepardMode::monolithic) {
-    elements = elements_from_walls<D>(walls, a.dx, bounds);
+    // Each wall's elements as the solver builds them: infinite walls clipped by the others.
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      elements.append(clip_by_other_walls<D>(elements_from_wall<D>(walls[k], a.dx, bounds), walls,
+                                             k, 1e-9 * a.dx));
   } else if (mode == ShepardMode::volume && !bounds.isEmpty()) {
     Eigen::Array<long, D, 1> lo, hi;
     double count = 1;

@@ -187,6 +187,7 @@
 #include <stdexcept>
 
 #include "curvsph/boundary/integrals/periodic_clip.hpp"
+#include "curvsph/boundary/integrals/wall_clip.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/boundary/wall_impact.hpp"
 #include "curvsph/core/error.hpp"
@@ -231,7 +232,8 @@ template <int D>
 void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
   const Case& c = spec_;
   // Infinite walls (planes, cylinders) are clipped to the domain box, or without one to the
-  // particles' bounding box grown by half its size and 4h on every side.
+  // particles' bounding box grown by half its size and 4h on every side, then to the fluid
+  // side of the other walls.
   Bounds<D> bounds;
   if (c.has_domain) {
     bounds = Bounds<D>(c.domain_min.head<D>(), c.domain_max.head<D>());
@@ -252,6 +254,9 @@ void IntegralsBoundary<D>::build_elements(const Particles<D>& P) {
     } catch (const std::invalid_argument& err) {
       throw InputError(c.file_name(), "walls." + std::to_string(k), err.what());
     }
+    // An infinite wall's elements end where another wall closes the fluid off (wall_clip.hpp):
+    // behind a side wall the floor would count the corner twice.
+    e = clip_by_other_walls<D>(e, walls_, k, 1e-9 * c.dx);
     // A wall drawn past a periodic seam would be counted twice (itself and its image).
     if (c.has_domain && (c.periodic[0] || c.periodic[1] || c.periodic[2]))
       e = clip_to_periodic_domain<D>(e, c.domain_min.head<D>(), c.domain_max.head<D>(), c.periodic);

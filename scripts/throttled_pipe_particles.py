@@ -38,7 +38,7 @@ def flux(paths):
 def noise(paths):
     for p in paths:
         d = read_vtp(p)
-        x, y, u, pr = d["Points"][:, 0], d["Points"][:, 1], d["velocity"], d["pressure"]
+        x, y, u, pr = d["points"][:, 0], d["points"][:, 1], d["velocity"], d["pressure"]
         m = np.abs(x) > 0.010  # the straight part of every variant
         band = np.floor(y[m] / 0.0005).astype(int)
         res = {}
@@ -54,7 +54,7 @@ def noise(paths):
 
 def profile(path):
     d = read_vtp(path)
-    x, y, u = d["Points"][:, 0], d["Points"][:, 1], d["velocity"][:, 0]
+    x, y, u = d["points"][:, 0], d["points"][:, 1], d["velocity"][:, 0]
     for name, x0, half in (("seam", 0.012, 0.005), ("throat", 0.0, 0.0025)):
         m = np.abs((x - x0 + LX / 2) % LX - LX / 2) < 0.0006
         edges = np.linspace(-half, half, 11)
@@ -79,7 +79,7 @@ def walls(variant):
 
 def moments(path, h, variant):
     d = read_vtp(path)
-    x, sig = d["Points"][:, :2], d["number_density"]
+    x, sig = d["points"][:, :2], d["density"] / d["mass"]  # sigma = rho / m
     bottom, top = walls(variant)
     alpha = 7 / (4 * math.pi * h * h)  # Wendland C2, 2-D (DESIGN.md §4)
     bins = {}

@@ -5,13 +5,17 @@ D2Q9 lattice-Boltzmann solver (BGK, Guo et al. 2002 forcing, Bouzidi et al. 2001
 interpolated bounce-back on the exact B-spline walls, periodic in x). Shares no code with
 curvsph: the walls are evaluated with scipy's BSpline from the case's control points.
 
-    /usr/bin/python3 scripts/throttled_pipe_reference.py NY G T_END [TAU [BUMP]]
+    /usr/bin/python3 scripts/throttled_pipe_reference.py NY G T_END [TAU [BUMP [PROFILES_CSV]]]
 
 NY: lattice nodes across the wide section (L_y = 0.01 m); G: body force per unit mass
 (m/s^2); T_END: simulated seconds (the slowest viscous mode decays as exp(-t/1 s));
 TAU: BGK relaxation time (1.0 default). BUMP: scales the walls' departure from y = -+L_y/2
 (1 default: the case's walls; 0: a plane channel, Q = g L_y^3 / (12 nu); 0.5: the "mild" variant
 of docs/validation/throttled_pipe/findings.md). Prints Q and Re = rho Q / mu every tenth of the run.
+PROFILES_CSV: writes the final u_x on the midline y = 0 (193 stations x = -L_x/2 + k L_x/192, the
+analysis' midline) and across the throat x = 0 (65 stations from wall to wall), the `line,x,y,u_x`
+rows that `curvsph validate throttled_pipe` compares the SPH profiles with
+(docs/validation/throttled_pipe/lb_profiles.csv, ny = 100).
 """
 import sys
 
@@ -92,7 +96,12 @@ steps = int(round(t_end / dt))
 print(f"ny={ny} nx={nx} tau={tau} dt={dt:.3e} s steps={steps} lubrication Q={Q_lub:.5e}")
 for s in range(steps + 1):
     rho = f.sum(0)
-    ux = ((f * c[:, 0, None, None]).sum(0) + 0.5 * g_l) / rho
+    # Guo et al. 2002 (eqs. 20, 22): the force density is F = rho g, the body force per unit
+    # mass times the local density, so u = (sum f c + F/2) / rho = sum f c / rho + g/2.
+    # (F = g, a force per unit volume at rho = 1, drives a fluid whose lattice density has
+    # drifted below 1 -- the interpolated bounce-back does not conserve mass -- harder than g:
+    # at ny = 50 the flux then crept up 0.1 % per 0.6 s with no end.)
+    ux = (f * c[:, 0, None, None]).sum(0) / rho + 0.5 * g_l
     uy = (f * c[:, 1, None, None]).sum(0) / rho
     ux[solid] = 0
     uy[solid] = 0
@@ -104,7 +113,7 @@ for s in range(steps + 1):
         break
     cu = c[:, 0, None, None] * ux + c[:, 1, None, None] * uy
     force = (1 - 0.5 / tau) * w[:, None, None] * (
-        3 * (c[:, 0, None, None] - ux) + 9 * cu * c[:, 0, None, None]) * g_l
+        3 * (c[:, 0, None, None] - ux) + 9 * cu * c[:, 0, None, None]) * g_l * rho
     fp = f - (f - feq(rho, ux, uy)) / tau + force
     for i in range(9):
         f[i] = np.roll(np.roll(fp[i], c[i, 0], 0), c[i, 1], 1)
@@ -114,3 +123,30 @@ for s in range(steps + 1):
         a = np.where(small, 2 * q * fp[i, ix, iy] + (1 - 2 * q) * fp[i, bx, by],
                      fp[i, ix, iy] / (2 * q) + (2 * q - 1) / (2 * q) * fp[o, ix, iy])
         f[o, ix, iy] = a
+
+
+if len(sys.argv) > 6:  # the profiles: u_x of each column's fluid nodes with u = 0 on its walls,
+    # linear in y within a column and in x between the two columns around x (periodic)
+    u_ms = ux * dx / dt
+
+    def column(k, y):
+        k %= nx
+        m = fluid[k]
+        yy = np.concatenate([[y_bottom(xs[k])], Y[k, m], [-y_bottom(xs[k])]])
+        return np.interp(y, yy, np.concatenate([[0.0], u_ms[k, m], [0.0]]))
+
+    def u_at(x, y):
+        s = (x + Lx / 2) / dx - 0.5
+        k = int(np.floor(s))
+        a = s - k
+        return (1 - a) * column(k, y) + a * column(k + 1, y)
+
+    with open(sys.argv[6], "w") as out:
+        out.write("line,x,y,u_x\n")
+        for k in range(193):
+            x = -Lx / 2 + k * Lx / 192
+            out.write(f"midline,{x:.9g},0,{u_at(x, 0.0):.9g}\n")
+        R0 = -y_bottom(0.0)
+        for k in range(65):
+            y = -R0 + 2 * R0 * k / 64
+            out.write(f"throat,0,{y:.9g},{u_at(0.0, y):.9g}\n")

@@ -20,11 +20,14 @@
 //  - throat_half_width: R at mid-length, from the walls;
 //  - with `reference_flux: Q_ref` (an independent steady flux of the same channel and
 //    force, e.g. scripts/throttled_pipe_reference.py): reference_flux, reference_reynolds
-//    and flux_rel_error = flux_mean / Q_ref - 1.
+//    and flux_rel_error = flux_mean / Q_ref - 1;
+//  - flux_particles = sum V v_x / L_x over the particles (the mean over x of Q(x) with no
+//    interpolation: the sections' kernel interpolation reads a parabolic profile low by ~1.5
+//    sigma^2/R^2, h^2), and with a reference flux flux_particles_rel_error.
 // CSV files (when the run writes files): throttled_pipe_flux.csv (x, R, y_c, Q),
 // throttled_pipe_midline_x.csv (x, v_x, v_y, eq. 48, lubrication 3Q/(4R)),
 // throttled_pipe_midline_y.csv (the mid-length section), throttled_pipe_history.csv
-// (mean flux and flux variation at every output time).
+// (mean flux, flux variation and flux_particles at every output time).
 #include <memory>
 #include <vector>
 

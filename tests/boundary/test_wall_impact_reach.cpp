@@ -10,7 +10,8 @@
 // - mirror ghosts: the particle's own ghost at 2d below it, a = -(rho c0 U) V^2 F(2d) 2d / m
 //   (the pair term of a ghost of pressure rho c0 U and the particle's volume V = m/rho = dx^2,
 //   F the kernel's gradient factor, grad W = F r);
-// each times the documented taper: 1 up to kImpactFull dx, 0 from kImpactReach dx on.
+// each times the documented taper of its family: 1 up to `full` dx, 0 from `zero` dx on
+// (kImpactReachIntegrals, kImpactReachGhosts).
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -86,45 +87,54 @@ double ghost_reference(double d) {
          d;
 }
 
-// The documented taper (wall_impact.hpp): 1 to kImpactFull dx, 0 from kImpactReach dx, the
-// cubic smoothstep 3 s^2 - 2 s^3 between.
-double taper(double d) {
-  const double q = d / kDx, a = kImpactFull, b = kImpactReach;
+// The documented taper (wall_impact.hpp): 1 to `full` dx, 0 from `zero` dx, the cubic
+// smoothstep 3 s^2 - 2 s^3 between.
+double taper(double d, double a, double b) {
+  const double q = d / kDx;
   if (q <= a) return 1;
   if (q >= b) return 0;
   const double s = (b - q) / (b - a);
   return s * s * (3 - 2 * s);
 }
 
-void expect_reach(const YAML::Node& root, double (*reference)(double)) {
+void expect_reach(const YAML::Node& root, double (*reference)(double), double a, double b) {
   // Within the full zone, half-way through the taper, and 2 dx off the wall.
-  for (const double q : {0.5 * kImpactFull, 0.5 * (kImpactFull + kImpactReach), 2.0}) {
+  for (const double q : {0.5 * a, 0.5 * (a + b), 2.0}) {
     const double d = q * kDx;
     const Vec2 diff = acceleration(root, d, kU) - acceleration(root, d, 0);
-    const double ref = reference(d) * taper(d);
-    if (q >= kImpactReach) {
+    const double ref = reference(d) * taper(d, a, b);
+    if (q >= b) {
       EXPECT_EQ(diff.norm(), 0) << "d = " << q << " dx";
     } else {
       EXPECT_NEAR(diff.y(), ref, 0.02 * ref) << "d = " << q << " dx";
       EXPECT_NEAR(diff.x(), 0, 1e-6 * ref) << "d = " << q << " dx";
     }
   }
-  EXPECT_NEAR(taper(0.5 * (kImpactFull + kImpactReach) * kDx), 0.5, 1e-12);
+  EXPECT_NEAR(taper(0.5 * (a + b) * kDx, a, b), 0.5, 1e-12);
 }
 
 TEST(WallImpactReach, IntegralsPushOnlyAParticleAboutToTouchItsWall) {
-  expect_reach(lone_particle("{method: integrals, shepard: geometric}"), integrals_reference);
+  // The documented reach: full to dx/4, none from 3 dx/4.
+  ASSERT_DOUBLE_EQ(kImpactReachIntegrals.full, Real(0.25));
+  ASSERT_DOUBLE_EQ(kImpactReachIntegrals.zero, Real(0.75));
+  expect_reach(lone_particle("{method: integrals, shepard: geometric}"), integrals_reference, 0.25,
+               0.75);
 }
 
 TEST(WallImpactReach, GhostsPushOnlyAParticleAboutToTouchItsWall) {
-  expect_reach(lone_particle("{method: ghost, map: mirror, velocity: no_slip}"), ghost_reference);
+  // The documented reach: full to dx/2, none from dx.
+  ASSERT_DOUBLE_EQ(kImpactReachGhosts.full, Real(0.5));
+  ASSERT_DOUBLE_EQ(kImpactReachGhosts.zero, Real(1));
+  expect_reach(lone_particle("{method: ghost, map: mirror, velocity: no_slip}"), ghost_reference,
+               0.5, 1.0);
 }
 
 TEST(WallImpactReach, TaperIsFullAtContactAndZeroBeyondItsReach) {
   // rho c0 U at contact, nothing at 2 dx, nothing for a receding particle.
-  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25), Real(0)), 7000);
-  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25), Real(2)), 0);
-  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(-0.25), Real(0)), 0);
+  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25), Real(0), kImpactReachIntegrals),
+                   7000);
+  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25), Real(2), kImpactReachGhosts), 0);
+  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(-0.25), Real(0), kImpactReachGhosts), 0);
 }
 
 }  // namespace

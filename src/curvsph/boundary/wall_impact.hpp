@@ -24,7 +24,8 @@
 //    water-hammer pressure of a rigid wall. It is added to the wall pressure of the wall pairs
 //    of a particle about to touch that wall only (ghosts: p_g of its single ghosts; integrals:
 //    p_b of that wall's elements), weighted by a taper of the particle's distance d to the wall
-//    (wall_impact_reach below: full up to d = dx/4, none from 3 dx/4 on), for approach only
+//    (wall_impact_reach below: boundary integrals full up to d = dx/4, none from 3 dx/4 on;
+//    ghosts dx/2 and dx), for approach only
 //    (u_a > 0: a wall that resists compression, never one that sucks a receding particle
 //    back), and without Zhang et al.'s low-dissipation limiter (beta = c0). Zhang et al. apply
 //    the Riemann pressure to the wall pair of a particle and its own mirror image; the ghost
@@ -69,25 +70,33 @@ namespace curvsph {
 // integrals still run to t = 1.5 s with nothing put back and no density clamped.
 inline constexpr Real kWallLayer = Real(0.1);
 
-// Item 1's reach, in dx: the impact pressure acts in full on a particle up to kImpactFull dx
-// from its wall, not at all from kImpactReach dx on, and tapers between.
-inline constexpr Real kImpactFull = Real(0.25);
-inline constexpr Real kImpactReach = Real(0.75);
+// Item 1's reach, in dx: the impact pressure acts in full on a particle up to `full` dx from
+// its wall, not at all from `zero` dx on, and tapers between. The ghosts reach further: a
+// particle's own ghost pushes with grad W(2d) -> 0 as d -> 0, so the impact pressure reaches
+// it mostly through its neighbours' ghosts, and with the integrals' 0.25-0.75 dx the ghost
+// column_on_cylinder_2d clamped the density 381 times (0 with 0.5-1 dx;
+// docs/validation/dam_break_3d/findings.md, "The reach of the impact pressure").
+struct ImpactReach {
+  Real full, zero;
+};
+inline constexpr ImpactReach kImpactReachIntegrals{Real(0.25), Real(0.75)};
+inline constexpr ImpactReach kImpactReachGhosts{Real(0.5), Real(1)};
 
-// The taper: 1 at q = depth/dx <= kImpactFull, 0 at q >= kImpactReach, the cubic smoothstep
-// 3 s^2 - 2 s^3 of s = (kImpactReach - q)/(kImpactReach - kImpactFull) between (no jump in the
-// force as a particle crosses either bound).
-inline Real wall_impact_reach(Real q) {
-  if (q <= kImpactFull) return 1;
-  if (q >= kImpactReach) return 0;
-  const Real s = (kImpactReach - q) / (kImpactReach - kImpactFull);
+// The taper: 1 at q = depth/dx <= full, 0 at q >= zero, the cubic smoothstep 3 s^2 - 2 s^3 of
+// s = (zero - q)/(zero - full) between (no jump in the force as a particle crosses either
+// bound).
+inline Real wall_impact_reach(Real q, const ImpactReach& r) {
+  if (q <= r.full) return 1;
+  if (q >= r.zero) return 0;
+  const Real s = (r.zero - q) / (r.zero - r.full);
   return s * s * (3 - 2 * s);
 }
 
 // Item 1: the pressure added to a wall pair of a particle of density rho approaching the wall
 // at speed `approach` = (u_w - u_i).n (n into the fluid), at `depth` dx from it.
-inline Real wall_impact_pressure(Real rho, Real c0, Real approach, Real depth) {
-  return rho * c0 * std::max(approach, Real(0)) * wall_impact_reach(depth);
+inline Real wall_impact_pressure(Real rho, Real c0, Real approach, Real depth,
+                                 const ImpactReach& r) {
+  return rho * c0 * std::max(approach, Real(0)) * wall_impact_reach(depth, r);
 }
 
 }  // namespace curvsph

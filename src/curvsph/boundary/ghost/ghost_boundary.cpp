@@ -150,7 +150,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
   // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
   // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
-  // tapered by i's own depth in front of that wall (none beyond 3 dx/4),
+  // tapered by i's own depth in front of that wall (none beyond dx),
   // and the contact layer, the wall force's law with d0 = kWallLayer dx, found through i's own
   // ghost like the wall force. Wall loads (wall_loads.hpp): the reaction of each ghost's pair term,
   // on the ghost's wall, at the midpoint of particle and ghost (the pressure term acts along the
@@ -230,7 +230,7 @@ class GhostBoundary final : public BoundaryModel<D> {
         if (G_.reflections[g] == 1) {
           Real d = 0;
           const Real ua = approach(P, i, g, &d);
-          pg += wall_impact_pressure(P.rho[i], c0, ua, d / dx);
+          pg += wall_impact_pressure(P.rho[i], c0, ua, d / dx, kImpactReachGhosts);
         }
         Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)

@@ -567,7 +567,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Real norm = q.wn.norm();
       if (norm > 0 && q.w > 0)
         fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (q.uw / q.w - P.v[i]).dot(q.wn) / norm,
-                                   q.wd / (q.w * dx_)) *
+                                   q.wd / (q.w * dx_), kImpactReachIntegrals) *
               q.wn;
     }
     if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {

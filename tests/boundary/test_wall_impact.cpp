@@ -18,8 +18,9 @@ namespace {
 
 TEST(WallImpact, PressureIsTheAcousticImpedanceTimesTheApproachSpeedOnly) {
   // Linearised Riemann problem at a rigid wall: rho c0 u_a, compression only.
-  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25)), 7000);
-  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(-0.25)), 0);
+  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(0.25), Real(0), kImpactReachIntegrals),
+                   7000);
+  EXPECT_DOUBLE_EQ(wall_impact_pressure(1000, 28, Real(-0.25), Real(0), kImpactReachIntegrals), 0);
 }
 
 // 200 particles (dx = 0.02, h = 2 dx): a 0.2 x 0.4 m column released in a 0.7 x 0.5 m tank,

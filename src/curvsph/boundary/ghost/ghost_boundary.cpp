@@ -26,6 +26,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     options_.cells = &fluid_cells_;
     if (c.boundary.wall_force) wall_force_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx));
     layer_ = WallForce(F_.eos.c0, static_cast<Real>(c.dx), kWallLayer);
+    dx_ = static_cast<Real>(c.dx);
     hydrostatic_ = c.boundary.ghost_pressure == "hydrostatic";
     no_tension_ = !c.boundary.wall_tension;
     difference_ = c.pressure_difference;
@@ -60,10 +61,11 @@ class GhostBoundary final : public BoundaryModel<D> {
   }
 
   // The speed at which particle i approaches the wall (face) of ghost g, (u_w - u_i).n along
-  // i's own normal to it: its own single ghost of the same wall whose normal is closest to
-  // the ghost's (the faces of a box share a wall index). The free-slip image of i reflects
-  // the normal velocity about the wall's, so u_w.n = (u_i + u_slip).n / 2.
-  Real approach(const Particles<D>& P, Index i, Index g) const {
+  // i's own normal to it, and (`depth`) i's distance to that wall (the impact pressure's taper):
+  // its own single ghost of the same wall whose normal is closest to the ghost's (the faces of a
+  // box share a wall index). The free-slip image of i reflects the normal velocity about the
+  // wall's, so u_w.n = (u_i + u_slip).n / 2.
+  Real approach(const Particles<D>& P, Index i, Index g, Real* depth = nullptr) const {
     Index best = -1;
     double dot = -2;
     for (Index q = own_begin_[i]; q < own_end_[i]; ++q) {
@@ -77,6 +79,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     if (best < 0) return 0;
     const Vec<D> n = G_.normal[best].template cast<Real>();
     const Vec<D>& slip = G_.v_slip.empty() ? G_.v[best] : G_.v_slip[best];
+    if (depth) *depth = static_cast<Real>(G_.source_depth[best]);
     return Real(0.5) * (slip - P.v[i]).dot(n);
   }
 
@@ -147,6 +150,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   // particle crossed the floor at t = 0.058 s without the force, at 0.144 s with it.
   // Always on (wall_impact.hpp, which says why and gives the sources): the impact pressure
   // rho_i c0 max((u_w - u_i).n, 0) added to p_g of every single ghost of a wall i approaches,
+  // tapered by i's own depth in front of that wall (none beyond dx),
   // and the contact layer, the wall force's law with d0 = kWallLayer dx, found through i's own
   // ghost like the wall force. Wall loads (wall_loads.hpp): the reaction of each ghost's pair term,
   // on the ghost's wall, at the midpoint of particle and ghost (the pressure term acts along the
@@ -164,6 +168,7 @@ class GhostBoundary final : public BoundaryModel<D> {
     const Vec<D> grav = F_.gravity;
     const WallForce layer = layer_;
     const Real c0 = F_.eos.c0;
+    const Real dx = dx_;
     WallLoadSums<D>* loads = this->loads_;
     const auto react = [&](Index i, Index g, const Vec<D>& R, const VecD<D>& at) {
       // Images reflected more than once within one wall (a polygon's or a CAD solid's
@@ -222,7 +227,11 @@ class GhostBoundary final : public BoundaryModel<D> {
         if (hydrostatic) pg += P.rho[s] * grav.dot(cells_.separation(G_.x[g], P.x[s]));
         // Impact pressure (wall_impact.hpp item 1) of i approaching this ghost's wall. Corner
         // ghosts take none: the single ghosts of each face carry that face's.
-        if (G_.reflections[g] == 1) pg += wall_impact_pressure(P.rho[i], c0, approach(P, i, g));
+        if (G_.reflections[g] == 1) {
+          Real d = 0;
+          const Real ua = approach(P, i, g, &d);
+          pg += wall_impact_pressure(P.rho[i], c0, ua, d / dx, kImpactReachGhosts);
+        }
         Vec<D> gp;
         if (difference) {  // pressure_gradient: difference (physics/pressure_gradient.hpp)
           gp = bg * ((pg - P.p[i]) * inv_sg2) * f * r;
@@ -334,6 +343,7 @@ class GhostBoundary final : public BoundaryModel<D> {
   Real av_alpha_h_c0_ = 0;    // artificial_viscosity.alpha h c0 (0: off)
   // artificial_viscosity.form: approaching
   bool av_approaching_ = false;
+  Real dx_ = 0;  // particle spacing: the reach of the impact pressure (wall_impact.hpp)
   GhostSet<D> G_;
   std::vector<Index> own_begin_, own_end_;  // each particle's own ghosts [begin, end)
   CellList<D> cells_;

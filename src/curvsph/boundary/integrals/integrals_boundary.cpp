@@ -172,8 +172,9 @@
 // 10. Always on (boundary/wall_impact.hpp, which says why and gives the sources): the impact
 //    pressure rho_i c0 max((u_w - u_i).n, 0) added to p_b + p_i of the elements of a wall a
 //    particle approaches (n, u_w: the W A-weighted mean normal and velocity of the elements
-//    of that wall facing one way near it), and the contact layer, item 8's law with d0 = kWallLayer
-//    dx.
+//    of that wall facing one way near it), tapered by the particle's W A-weighted mean normal
+//    distance to those elements (none beyond 3 dx/4), and the contact layer, item 8's law with
+//    d0 = kWallLayer dx.
 #include "curvsph/boundary/integrals/integrals_boundary.hpp"
 
 #include <Eigen/Cholesky>
@@ -530,7 +531,7 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
     struct Group {
       std::int32_t wall = -1;
       Vec<D> n0 = Vec<D>::Zero(), wn = Vec<D>::Zero(), uw = Vec<D>::Zero();
-      Real w = 0;
+      Real w = 0, wd = 0;  // sum W A, sum W A (x_i - x_b).n_b
     };
     constexpr int kGroups = 6;
     std::array<Group, kGroups> groups;
@@ -555,10 +556,13 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
         groups[k].wn += wa * en_[b];
         groups[k].uw += wa * eu_[b];
         groups[k].w += wa;
+        groups[k].wd += wa * q.r.dot(en_[b]);
       }
       fv += (P.v[i] - eu_[b]) * (wa / std::max(q.r.dot(en_[b]), dn_min));
     }
-    // Item 10: the impact pressure of i approaching a wall, added to p_b of its elements. Its
+    // Item 10: the impact pressure of i approaching a wall, added to p_b of its elements and
+    // tapered by i's mean normal distance to them (wall_impact_reach: the term acts on a
+    // particle about to touch the wall, not across the kernel support). Its
     // speed is taken along the mean normal sum_b W A n of the elements of one wall facing one
     // way (and against their mean velocity), not element by element: flow along a curved wall
     // then has none (an element's normal is tilted by the curvature); walls facing each other
@@ -567,7 +571,8 @@ void IntegralsBoundary<D>::add_accelerations(Particles<D>& P) {
       const Group& q = groups[static_cast<std::size_t>(k)];
       const Real norm = q.wn.norm();
       if (norm > 0 && q.w > 0)
-        fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (q.uw / q.w - P.v[i]).dot(q.wn) / norm) *
+        fp += wall_impact_pressure(P.rho[i], F_.eos.c0, (q.uw / q.w - P.v[i]).dot(q.wn) / norm,
+                                   q.wd / (q.w * dx_), kImpactReachIntegrals) *
               q.wn;
     }
     if (!difference && (consistent_ || (tensile_ && P.p[i] < 0))) {

@@ -17,6 +17,9 @@
 #include <TopoDS_Wire.hxx>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "curvsph/cad/elementary_face.hpp"
 
 namespace curvsph::cad {
 
@@ -30,6 +33,7 @@ struct TrimmedFaceWall::Occ {
   std::vector<Edge> edges;
   std::vector<gp_Pnt> vertices;
   double tol;
+  std::optional<ElementaryFace> elementary;  // planes and cylinders: closed forms
 };
 
 TrimmedFaceWall::TrimmedFaceWall(std::shared_ptr<const NurbsSurfaceWall> surface,
@@ -51,6 +55,17 @@ TrimmedFaceWall::TrimmedFaceWall(std::shared_ptr<const NurbsSurfaceWall> surface
     if (!v1.IsNull()) occ_->vertices.push_back(BRep_Tool::Pnt(v1));
     if (!v2.IsNull()) occ_->vertices.push_back(BRep_Tool::Pnt(v2));
   }
+  occ_->elementary = ElementaryFace::make(BRep_Tool::Surface(face), scale);
+  if (occ_->elementary) {
+    // Which way the fluid lies, from the NURBS wall's normal (it knows the face's orientation
+    // and the fluid side) at a point just off the surface's middle.
+    const auto b = uv_bounds();
+    Vec3d p, su, sv;
+    eval(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), p, su, sv);
+    const Vec3d n = occ_->elementary->own_normal(p);
+    const WallPoint<3> w = surf_->closest(p + 1e-6 * surf_->surface().size() * n);
+    occ_->elementary->set_fluid_sign(w.normal.dot(n) > 0 ? 1.0 : -1.0);
+  }
 }
 
 TrimmedFaceWall::~TrimmedFaceWall() = default;
@@ -60,11 +75,30 @@ const TopoDS_Face& TrimmedFaceWall::face() const {
 }
 
 WallPoint<3> TrimmedFaceWall::closest(const Vec3d& x, const ParamSeed& seed) const {
-  WallPoint<3> w = surf_->closest(x, seed);
+  return answer(x, seed, true);
+}
+
+WallPoint<3> TrimmedFaceWall::closest_nurbs(const Vec3d& x, const ParamSeed& seed) const {
+  return answer(x, seed, false);
+}
+
+WallPoint<3> TrimmedFaceWall::answer(const Vec3d& x, const ParamSeed& seed,
+                                     bool allow_elementary) const {
+  const ElementaryFace* el = allow_elementary && occ_->elementary ? &*occ_->elementary : nullptr;
+  WallPoint<3> w;
+  if (el && !el->closest(x, w)) el = nullptr;
+  if (!el) w = surf_->closest(x, seed);
   // Trimming test in the face's own parameter space (the converted NURBS may be
   // parametrised differently, e.g. rational arcs of a cylinder).
   const gp_Pnt foot(w.foot.x() / scale_, w.foot.y() / scale_, w.foot.z() / scale_);
-  const gp_Pnt2d uv = occ_->analysis->ValueOfUV(foot, occ_->tol);
+  gp_Pnt2d uv;
+  if (el) {
+    double u, v;
+    el->parameters(w.foot, u, v);
+    uv.SetCoord(u, v);
+  } else {
+    uv = occ_->analysis->ValueOfUV(foot, occ_->tol);
+  }
   BRepClass_FaceClassifier cls(occ_->face, uv, occ_->tol);
   if (cls.State() != TopAbs_OUT) return w;
   // Outside the trimmed face: the nearest point of its boundary (edges and vertices).
@@ -79,6 +113,13 @@ WallPoint<3> TrimmedFaceWall::closest(const Vec3d& x, const ParamSeed& seed) con
       best = proj.LowerDistance(), best_p = proj.NearestPoint();
   }
   const Vec3d edge_foot = scale_ * Vec3d(best_p.X(), best_p.Y(), best_p.Z());
+  WallPoint<3> e;
+  if (el && el->closest(edge_foot, e)) {  // surface data at the edge point, in closed form
+    e.foot = edge_foot;
+    const Vec3d d = x - edge_foot;
+    e.distance = std::copysign(d.norm(), d.dot(e.normal));
+    return e;
+  }
   // Surface data (normal, curvatures) at the edge point: its NURBS parameters by a seeded
   // projection of the edge point itself (distance ~0, so a couple of Newton steps).
   const WallPoint<3> on = surf_->closest(edge_foot, seed);

@@ -24,7 +24,10 @@ class TrimmedFaceWall : public Wall<3> {
                   double scale, std::string label);
   ~TrimmedFaceWall() override;
 
+  // Planes and cylinders answer in closed form (elementary_face.hpp), other surfaces from the
+  // NURBS conversion; closest_nurbs always from the NURBS conversion (the general path).
   WallPoint<3> closest(const Vec3d& x, const ParamSeed& seed = {}) const override;
+  WallPoint<3> closest_nurbs(const Vec3d& x, const ParamSeed& seed = {}) const;
   std::string describe() const override { return label_ + ": " + surf_->describe(); }
   double min_radius_of_curvature() const override { return surf_->min_radius_of_curvature(); }
   const NurbsSurfaceWall& surface_wall() const { return *surf_; }
@@ -40,6 +43,8 @@ class TrimmedFaceWall : public Wall<3> {
   std::vector<std::vector<std::array<double, 2>>> trim_loops(double spacing) const;
 
  private:
+  WallPoint<3> answer(const Vec3d& x, const ParamSeed& seed, bool allow_elementary) const;
+
   struct Occ;  // OpenCASCADE handles, kept out of this header
   std::shared_ptr<const NurbsSurfaceWall> surf_;
   std::unique_ptr<Occ> occ_;

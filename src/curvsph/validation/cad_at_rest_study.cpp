@@ -6,18 +6,21 @@
 //  - two 2-D controls: a V whose 45 degree walls meet at 90 degrees, and a circle;
 //  - 3-D closed CAD solids written here as STEP by OpenCASCADE (a box and an upright closed
 //    cylinder: 90 degree concave edges between the floor and the sides, plane-plane and
-//    plane-cylinder), depth H = 0.08 m, dx = H/6, and two V troughs (prisms of a triangle,
-//    planar sides meeting at 60 and 100 degrees along the bottom edge, perpendicular end
-//    caps: edges and triple corners of flat faces, boundary/ghost/flat_corners.hpp), dx = H/8.
-// The 2-D solids and the prisms are packed first (setup.relax with free_faces: hold; the
-// integrals too).
-// 2-D runs 1 s (t sqrt(g/H) = 4.4), 3-D 0.5 s (5.5; the CAD closest points make 1 s too long
-// for the study's 20 min on one thread); --quick: a tenth. Each from the hydrostatic start
-// with the three ghost maps and with boundary integrals (geometric Shepard factor; the
-// default energy-paired wall terms, boundary.pressure: conservative, and the symmetric form
-// for comparison), one thread. Per run: the stray-particle counters of metrics.json and the
-// hydrostatic analysis' pressure against rho0 g (H - z) at the end: the RMS over the particles at
-// least one support 2h below the free surface ("deep"), and over all particles, both over rho0 g H.
+//    plane-cylinder), depth H = 0.08 m, dx = H/12 with the ghosts and H/9 with the integrals
+//    (the resolutions at which the box with analytic walls holds 2 %: integrals_findings.md),
+//    and two V troughs (prisms of a triangle, planar sides meeting at 60 and 100 degrees along
+//    the bottom edge, perpendicular end caps: edges and triple corners of flat faces,
+//    boundary/ghost/flat_corners.hpp), dx = H/8 with every method.
+// The 2-D solids, the cylinder and the prisms are packed first (setup.relax with free_faces: hold;
+// the integrals too), the box is not (its walls lie along the lattice). Every solid runs 1 s (t
+// sqrt(g/H) = 4.4 in 2-D, 11 in 3-D); --quick: a tenth. The runs are kept (run_cache.hpp:
+// RUN/study_run.json) and reused while their case file is unchanged; the 3-D cylinder and box run
+// first (the longest, the rows). Each from the hydrostatic start with the three ghost maps
+// and with boundary integrals (geometric Shepard factor; the default energy-paired wall terms,
+// boundary.pressure: conservative, and the symmetric form for comparison), one thread. Per run: the
+// stray-particle counters of metrics.json and the hydrostatic analysis' pressure against rho0 g (H
+// - z) at the end: the RMS over the particles at least one support 2h below the free surface
+// ("deep"), and over all particles, both over rho0 g H.
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -37,6 +40,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <optional>
 
 #include "curvsph/core/error.hpp"
 #include "curvsph/io/case_file.hpp"
@@ -52,23 +56,25 @@ constexpr double kG = 9.81;
 struct Method {
   const char* name;
   const char* boundary;  // the whole boundary block
+  bool integrals;
 };
 
 const Method kMethods[] = {
-    {"mirror", "{method: ghost, map: mirror}"},
-    {"mirror_beta", "{method: ghost, map: mirror_beta}"},
-    {"density_preserving", "{method: ghost, map: density_preserving}"},
-    {"integrals", "{method: integrals}"},
+    {"mirror", "{method: ghost, map: mirror}", false},
+    {"mirror_beta", "{method: ghost, map: mirror_beta}", false},
+    {"density_preserving", "{method: ghost, map: density_preserving}", false},
+    {"integrals", "{method: integrals}", true},
     // The form that was the default before (a comparison: it gains energy at walls,
     // integrals_findings.md).
-    {"integrals_symmetric", "{method: integrals, pressure: symmetric}"},
+    {"integrals_symmetric", "{method: integrals, pressure: symmetric}", true},
 };
 
 struct Solid {
   std::string name;
   int dim;
   double depth, dx, bottom = 0;
-  bool pack = false;  // setup.relax first (free_faces: hold)
+  double dx_integrals = 0;  // > 0: the integrals' dx where it differs
+  bool pack = true;         // setup.relax before t = 0
   YAML::Node walls;
   std::string region;  // the fluid region (clipped by the walls)
   std::string describe;
@@ -81,7 +87,6 @@ Solid polygon_tank(int theta_deg) {
   Solid s;
   s.name = fmt::format("polygon_{}deg", theta_deg);
   s.dim = 2;
-  s.pack = true;
   s.depth = H;
   s.dx = H / 20;
   s.walls = YAML::Load(
@@ -113,7 +118,6 @@ Solid control(const std::string& name) {
   Solid s;
   s.name = name;
   s.dim = 2;
-  s.pack = true;
   s.depth = 0.5;
   s.dx = 0.025;
   if (name == "polygon_v90") {
@@ -139,8 +143,13 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
   s.name = "cad_" + name;
   s.dim = 3;
   s.depth = H;
-  s.dx = H / 6;
-  const auto file = dir / (name + ".step");
+  s.dx = H / 12;
+  s.dx_integrals = H / 9;
+  // The cylinder's wall lies across the lattice: packed, as the 2-D circle (0.11 to 0.18 deep
+  // from the bare lattice, 0.005 packed; the cylinder at H/dx = 6 with mirror_beta 0.0875 bare,
+  // 0.0291 packed: findings.md). The box's walls lie along it.
+  s.pack = name != "box";
+  const auto file = dir / "solids" / (name + ".step");
   if (name == "box") {
     write_step(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(0.08, 0.08, 2 * H)).Shape(), file);
     s.region = fmt::format("{{box: {{min: [0, 0, 0], max: [0.08, 0.08, {}]}}}}", H);
@@ -153,7 +162,7 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
     const int theta = std::stoi(name.substr(6));
     const double T = 2 * H, w = T * std::tan(0.5 * theta * M_PI / 180.0), L = 0.08;
     s.dx = H / 8;
-    s.pack = true;
+    s.dx_integrals = 0;
     const TopoDS_Face tri =
         BRepBuilderAPI_MakeFace(
             BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(w, 0, T), gp_Pnt(-w, 0, T), true)
@@ -172,11 +181,14 @@ Solid cad_solid(const std::string& name, const std::filesystem::path& dir) {
     s.region = fmt::format("{{box: {{min: [-0.06, -0.06, 0], max: [0.06, 0.06, {}]}}}}", H);
     s.describe = "STEP upright cylinder, radius 0.06 m, height 0.16 m (side, floor, lid)";
   }
-  // Relative to the case file, which the study writes into runs/NAME/ (a path that does not
-  // depend on the checkout, so that the kept runs' case fingerprints hold in any of them).
-  s.walls = YAML::Load(
-      fmt::format("[{{shape: cad, file: '../../solids/{}.step', fluid: inside}}]", name));
+  // Relative to the case files, which the study writes into its folder (dir).
+  s.walls =
+      YAML::Load(fmt::format("[{{shape: cad, file: 'solids/{}.step', fluid: inside}}]", name));
   return s;
+}
+
+double method_dx(const Solid& s, const Method& m) {
+  return m.integrals && s.dx_integrals > 0 ? s.dx_integrals : s.dx;
 }
 
 YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
@@ -189,7 +201,7 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
                   "density: {{method: continuity, delta_sph: 0.1}}, gravity: {}, boundary: {}, "
                   "time: {{end: {}, cfl: 0.25}}, output: {{every: {}, vtk: false}}, "
                   "analysis: {{hydrostatic: {{depth: {}, bottom: {}}}}}}}",
-                  s.name, s.dim, s.dx, s.region, s.depth, s.bottom, c0,
+                  s.name, s.dim, method_dx(s, m), s.region, s.depth, s.bottom, c0,
                   s.dim == 2 ? "[0, -9.81]" : "[0, 0, -9.81]", m.boundary, t_end, t_end / 10,
                   s.depth, s.bottom));
   root["walls"] = s.walls;
@@ -198,10 +210,8 @@ YAML::Node make_case(const Solid& s, const Method& m, double t_end) {
   // off balance (findings.md). The integrals too: their own packing closes a box region only
   // (setup/relax_integrals.hpp), so they start from the node-density packing of the default
   // ghost map (setup.relax.map defaults to boundary.map, mirror_beta): on the 60 degree tank
-  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The CAD box and
-  // cylinder keep the bare lattice (2000 packing steps of CAD closest points); the prisms are
-  // packed (2 s: their V packs in ~100 steps; bare, the 60 degree V gave 0.376 deep with
-  // 7006 wall contacts at H/dx = 8, packed 0.043).
+  // 0.0032 deep against 0.030 from the bare lattice (integrals_findings.md). The CAD cylinder
+  // likewise; the CAD box keeps the lattice, which its walls lie along.
   if (s.pack) root["setup"] = YAML::Load("{relax: {free_faces: hold}}");
   return root;
 }
@@ -215,8 +225,7 @@ double number_or_nan(const nlohmann::json& m, const char* k) {
 
 StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
   std::filesystem::create_directories(ctx.out_dir / "solids");
-  // 3-D: half the time (the CAD closest points cost ~0.25 ms a particle-step on one core).
-  const double t2 = ctx.quick ? 0.1 : 1.0, t3 = t2 / 2;
+  const double t2 = ctx.quick ? 0.1 : 1.0, t3 = t2;
   std::vector<Solid> solids = {polygon_tank(60),
                                polygon_tank(75),
                                polygon_tank(90),
@@ -224,110 +233,137 @@ StudyResult run_cad_at_rest_study(const StudyContext& ctx) {
                                polygon_tank(120),
                                control("polygon_v90"),
                                control("circle"),
-                               cad_solid("box", ctx.out_dir / "solids"),
-                               cad_solid("cylinder", ctx.out_dir / "solids"),
-                               cad_solid("prism_60", ctx.out_dir / "solids"),
-                               cad_solid("prism_100", ctx.out_dir / "solids")};
+                               cad_solid("box", ctx.out_dir),
+                               cad_solid("cylinder", ctx.out_dir),
+                               cad_solid("prism_60", ctx.out_dir),
+                               cad_solid("prism_100", ctx.out_dir)};
+  const std::size_t nm = std::size(kMethods);
+  // Run order: the CAD cylinder and box first (the longest, the rows), mirror_beta and
+  // integrals before the other methods, then the other solids; the tables keep the solids' and
+  // methods' order.
+  std::vector<std::pair<std::size_t, std::size_t>> order;
+  std::vector<std::size_t> first, rest;
+  for (const char* name : {"cad_cylinder", "cad_box"})
+    for (std::size_t k = 0; k < solids.size(); ++k)
+      if (solids[k].name == name) first.push_back(k);
+  for (std::size_t k = 0; k < solids.size(); ++k)
+    if (std::find(first.begin(), first.end(), k) == first.end()) rest.push_back(k);
+  for (const std::size_t s : first)
+    for (const std::size_t m : {1, 3, 0, 2, 4}) order.emplace_back(s, m);
+  for (const std::size_t s : rest)
+    for (std::size_t m = 0; m < nm; ++m) order.emplace_back(s, m);
+  std::vector<std::string> csv_rows(solids.size() * nm), table_rows(solids.size() * nm);
+  std::vector<std::optional<SummaryRow>> summary_rows(solids.size() * nm);
   StudyResult r;
-  std::ofstream csv(ctx.out_dir / "runs.csv");
-  csv << "solid,method,dx,depth,t_end,time_reached,particles,particles_projected,"
-         "particles_removed,escaped_particles,wall_contacts,wall_contact_particles,"
-         "pressure_rms_deep,pressure_rms_all,kinetic_energy_max,wall_seconds\n";
-  std::string table =
-      "| solid | method | particles | t reached | put back from past a wall | past a wall at "
-      "the end | wall contacts (particles) | removed | p RMS deep / rho g H | p RMS all / rho g "
-      "H | KE max / M g H | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const Solid& s : solids) {
+  for (const auto& [si, mi] : order) {
+    const Solid& s = solids[si];
+    const Method& meth = kMethods[mi];
+    const std::size_t slot = si * nm + mi;
     const double t_end = s.dim == 2 ? t2 : t3;
-    for (const Method& meth : kMethods) {
-      const std::string tag = s.name + "_" + meth.name;
-      RunOptions o;
-      o.out_dir = ctx.out_dir / "runs" / tag;
-      o.threads = ctx.threads;
-      o.progress = true;
-      o.overwrite = true;
-      // The case is written into its run's folder: run_or_reuse (run_cache.hpp) reuses the
-      // kept run while that file is unchanged, so that adding a solid runs only its own rows.
-      const auto case_path = o.out_dir / "case.yaml";
-      std::filesystem::create_directories(o.out_dir);
-      {
-        YAML::Emitter e;
-        e << make_case(s, meth, t_end);
-        std::ofstream(case_path) << e.c_str() << "\n";
-      }
-      nlohmann::json m;
-      try {
-        m = run_or_reuse(case_path, {}, o);
-      } catch (const InputError& e) {
-        table +=
-            fmt::format("| {} | {} | refused: {} | | | | | | | | |\n", s.name, meth.name, e.what());
-        continue;
-      } catch (const InstabilityError& e) {
-        std::ifstream in(o.out_dir / "metrics_unstable.json");
-        m = nlohmann::json::parse(in);
-        std::cerr << "cad_at_rest: " << tag << ": " << e.what() << "\n";
-      }
-      const double p_deep = number_or_nan(m, "pressure_l2_error_deep");
-      const double p_all = number_or_nan(m, "pressure_l2_error");
-      const double escaped = number_or_nan(m, "escaped_particles");
-      const double reached = number_or_nan(m, "time_reached");
-      const double n0 = number_or_nan(m, "particles_initial");
-      const double proj = number_or_nan(m, "particles_projected");
-      const double removed = number_or_nan(m, "particles_removed");
-      const double contacts = number_or_nan(m, "wall_contacts");
-      const double cparts = number_or_nan(m, "wall_contact_particles");
-      const double secs = number_or_nan(m, "wall_seconds");
-      const double ke = number_or_nan(m, "kinetic_energy_max");
-      csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.1f}\n",
-                         s.name, meth.name, s.dx, s.depth, t_end, reached, n0, proj, removed,
-                         escaped, contacts, cparts, p_deep, p_all, ke, secs);
-      table += fmt::format(
-          "| {} | {} | {:.0f} | {:.3f} | {:.0f} | {:.0f} | {:.0f} ({:.0f}) | {:.0f} | {:.4f} | "
-          "{:.4f} | {:.2e} | {:.0f} |\n",
-          s.name, meth.name, n0, reached, proj, escaped, contacts, cparts, removed, p_deep, p_all,
-          ke, secs);
-      const std::string key = fmt::format("cad_at_rest.{}.{}", s.name, meth.name);
-      r.metrics[key + ".particles_projected"] = proj;
-      r.metrics[key + ".wall_contacts"] = contacts;
-      r.metrics[key + ".pressure_rms_deep"] = p_deep;
-      r.metrics[key + ".pressure_rms_all"] = p_all;
-      // One row per method and solid; whether particles crossed is in its reference text.
-      r.summary.push_back({key + ".pressure_rms_deep", p_deep, "<= 0.02 and none put back",
-                           fmt::format("rho0 g (H - z) at least 2h below the surface at t = {} s; "
-                                       "put back from past a wall: {:.0f}, wall contacts: {:.0f}",
-                                       t_end, proj, contacts),
-                           p_deep <= 0.02 && proj == 0 && reached >= t_end - 1e-9});
+    const double dx = method_dx(s, meth);
+    const std::string tag = s.name + "_" + meth.name;
+    const auto case_path = ctx.out_dir / (tag + ".yaml");
+    {
+      YAML::Emitter e;
+      e << make_case(s, meth, t_end);
+      std::ofstream(case_path) << e.c_str() << "\n";
     }
+    RunOptions o;
+    o.out_dir = ctx.out_dir / "runs" / tag;
+    o.threads = ctx.threads;
+    o.progress = true;
+    o.overwrite = true;
+    nlohmann::json m;
+    try {
+      m = run_or_reuse(case_path, {}, o);
+    } catch (const InputError& e) {
+      table_rows[slot] = fmt::format("| {} | {} | {} | refused: {} | | | | | | | | | |\n", s.name,
+                                     meth.name, std::lround(s.depth / dx), e.what());
+      continue;
+    } catch (const InstabilityError& e) {
+      std::ifstream in(o.out_dir / "metrics_unstable.json");
+      m = nlohmann::json::parse(in);
+      std::cerr << "cad_at_rest: " << tag << ": " << e.what() << "\n";
+    }
+    const double p_deep = number_or_nan(m, "pressure_l2_error_deep");
+    const double p_all = number_or_nan(m, "pressure_l2_error");
+    const double escaped = number_or_nan(m, "escaped_particles");
+    const double reached = number_or_nan(m, "time_reached");
+    const double n0 = number_or_nan(m, "particles_initial");
+    const double proj = number_or_nan(m, "particles_projected");
+    const double removed = number_or_nan(m, "particles_removed");
+    const double contacts = number_or_nan(m, "wall_contacts");
+    const double cparts = number_or_nan(m, "wall_contact_particles");
+    const double secs = number_or_nan(m, "wall_seconds");
+    const double ke = number_or_nan(m, "kinetic_energy_max");
+    csv_rows[slot] =
+        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.1f}\n", s.name,
+                    meth.name, dx, s.depth, t_end, reached, n0, proj, removed, escaped, contacts,
+                    cparts, p_deep, p_all, ke, secs);
+    table_rows[slot] = fmt::format(
+        "| {} | {} | {} | {:.0f} | {:.3f} | {:.0f} | {:.0f} | {:.0f} ({:.0f}) | {:.0f} | {:.4f} | "
+        "{:.4f} | {:.2e} | {:.0f} |\n",
+        s.name, meth.name, std::lround(s.depth / dx), n0, reached, proj, escaped, contacts, cparts,
+        removed, p_deep, p_all, ke, secs);
+    const std::string key = fmt::format("cad_at_rest.{}.{}", s.name, meth.name);
+    r.metrics[key + ".particles_projected"] = proj;
+    r.metrics[key + ".wall_contacts"] = contacts;
+    r.metrics[key + ".pressure_rms_deep"] = p_deep;
+    r.metrics[key + ".pressure_rms_all"] = p_all;
+    // One row per method and solid; whether particles crossed is in its reference text.
+    summary_rows[slot] = SummaryRow{
+        key + ".pressure_rms_deep", p_deep, "<= 0.02 and none put back",
+        fmt::format("rho0 g (H - z) at least 2h below the surface at t = {} s, H/dx = {}; put "
+                    "back from past a wall: {:.0f}, wall contacts: {:.0f}",
+                    t_end, std::lround(s.depth / dx), proj, contacts),
+        p_deep <= 0.02 && proj == 0 && reached >= t_end - 1e-9};
   }
-  csv.close();  // the plot reads it
+  {
+    std::ofstream csv(ctx.out_dir / "runs.csv");
+    csv << "solid,method,dx,depth,t_end,time_reached,particles,particles_projected,"
+           "particles_removed,escaped_particles,wall_contacts,wall_contact_particles,"
+           "pressure_rms_deep,pressure_rms_all,kinetic_energy_max,wall_seconds\n";
+    for (const std::string& row : csv_rows) csv << row;
+  }
+  std::string table =
+      "| solid | method | H/dx | particles | t reached | put back from past a wall | past a wall "
+      "at the end | wall contacts (particles) | removed | p RMS deep / rho g H | p RMS all / rho "
+      "g H | KE max / M g H | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& row : table_rows) table += row;
+  for (const auto& row : summary_rows)
+    if (row) r.summary.push_back(*row);
   run_plot_script(ctx, "plot_cad_at_rest.py", {ctx.out_dir.string()});
   std::ofstream md(ctx.out_dir / "README.md");
   md << "# Water at rest in solids with sharp edges\n\n"
      << "Regenerate with `build/curvsph validate cad_at_rest --threads 1`"
-     << (ctx.quick ? " (these figures: `--quick`, 0.1 s in 2-D, 0.05 s in 3-D)" : "")
-     << "; each run's case is written to runs/NAME/case.yaml and a finished run is kept "
-        "(runs/NAME/study_run.json) and reused while that file is unchanged: delete a run's "
-        "folder to redo it with a new build"
+     << (ctx.quick ? " (these figures: `--quick`, 0.1 s)" : "")
      << ". Each solid is filled with water from the hydrostatic state and held under gravity for "
-     << t2 << " s (2-D) or " << t3
-     << " s (3-D) with the three ghost maps and with boundary integrals (geometric Shepard "
+     << t2
+     << " s with the three ghost maps and with boundary integrals (geometric Shepard "
         "factor; `integrals`: the default wall terms, `boundary.pressure: conservative`; "
         "`integrals_symmetric`: `pressure: symmetric`, the default before, for comparison); "
         "linear EOS with c0 = 10 sqrt(g H), continuity density with delta-SPH 0.1, h = 2 dx, "
         "the case defaults otherwise (hydrostatic ghost pressure, the 0.1 dx wall contact). "
-        "The 2-D solids start from the lattice packed inside the walls and the free surface "
-        "(`setup: {relax: {free_faces: hold}}`, the node-density packing of the mirror_beta "
-        "ghost map, with the integrals too: their own packing closes a box region only); the "
-        "CAD box and cylinder from the bare lattice, the CAD prisms packed like the 2-D solids. "
+        "The 2-D solids and the CAD cylinder start from the lattice packed inside the walls and "
+        "the free surface (`setup: {relax: {free_faces: hold}}`, the node-density packing of the "
+        "mirror_beta ghost map, with the integrals too: their own packing closes a box region "
+        "only), the CAD prisms too; the CAD box from the bare lattice, which its walls lie along. "
+        "The CAD box and cylinder run at H/dx = 12 with the ghosts and 9 with the integrals, the "
+        "resolutions at which the "
+        "same box with analytic walls holds 2 % (integrals_findings.md, \"3-D at rest\"). "
         "Pressure error (the hydrostatic analysis): p - rho0 g (H - z) at the end over "
         "rho0 g H, RMS over the particles at least one support (2h = 4 dx) below the surface "
-        "(deep) and over all. At H/dx = 6 (3-D) 'deep' is the two rows above the floor; the "
-        "CAD box's misses there are the resolution's (the same box with analytic walls at "
-        "H/dx = 6, 9 and 12: integrals_findings.md; the CAD closest points make H/dx = 9 about "
-        "five times as long a run), the cylinder's are discussed in findings.md.\n\n";
-  for (const Solid& s : solids)
+        "(deep) and over all. Each run is kept in runs/ with its case file (SOLID_METHOD.yaml) "
+        "and reused while the case file is unchanged (delete runs/RUN to redo one with a new "
+        "build). Findings: findings.md.\n\n";
+  for (const Solid& s : solids) {
     md << "- `" << s.name << "`: " << s.describe << "; depth H = " << s.depth << " m, dx = " << s.dx
-       << " m (H/dx = " << std::lround(s.depth / s.dx) << ")\n";
+       << " m (H/dx = " << std::lround(s.depth / s.dx) << ")";
+    if (s.dx_integrals > 0)
+      md << ", with the integrals dx = " << s.dx_integrals
+         << " m (H/dx = " << std::lround(s.depth / s.dx_integrals) << ")";
+    md << "\n";
+  }
   md << "\n"
      << table << "\n![pressure error](pressure_error.png)\n\n"
      << summary_markdown(r.summary);

@@ -10,6 +10,7 @@
 
 #include "curvsph/boundary/ghost/facet_images.hpp"
 #include "curvsph/boundary/ghost/flat_corners.hpp"
+#include "curvsph/boundary/ghost/plane_edges.hpp"
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
 
@@ -216,11 +217,43 @@ struct Generator {
     return true;
   }
 
+  struct CurvedImage {
+    std::int32_t wall;
+    WallPoint<D> p;
+    VecD<D> x, u, u_slip;
+    double beta;
+  };
+
+  // A curved wall's image reflected across the flat faces of other walls it is mirror-
+  // symmetric about (plane_edges.hpp), velocities composed (emit_corner's rule); the corner
+  // record splits the reaction between the two walls.
+  void plane_edges(std::vector<Record>& out, std::vector<Corner>& corners, Index i,
+                   const VecD<D>& x, const CurvedImage& c,
+                   const std::array<FlatFace<D>, kMaxFlat>& flat, int nflat) const {
+    for (int a = 0; a < nflat; ++a) {
+      const FlatFace<D>& A = flat[static_cast<std::size_t>(a)];
+      if (A.wall == c.wall) continue;
+      const auto im = plane_edge_image<D>(walls[c.wall], x, c.p, c.x, A, opt.support);
+      if (!im) continue;
+      const VecD<D> uwa = walls[A.wall].velocity(im->foot);
+      const VecD<D> u2 = images(c.u, uwa, A.normal, 1.0).first;
+      const VecD<D> u2_slip =
+          ghost_velocity<D>(GhostVelocity::free_slip, c.u_slip, uwa, A.normal, 1.0);
+      corners.push_back({static_cast<Index>(out.size()),
+                         {c.wall, A.wall, -1},
+                         {c.p.normal, A.normal, VecD<D>::Zero()},
+                         2});
+      emit(out, i, A.wall, im->x, u2, u2_slip, c.beta, im->depth, im->depth, im->foot, A.normal, 2);
+    }
+  }
+
   // Returns {penetrated, no_root}.
   std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
                                  std::vector<Record>& out, std::vector<Corner>& corners) const {
     std::array<FlatFace<D>, kMaxFlat> flat;
     int nflat = 0;
+    std::array<CurvedImage, kMaxFlat> curved;  // single images across curved walls
+    int ncurved = 0;
     bool penetrated = false, no_root = false;
     const VecD<D> x = xi.template cast<double>();
     const VecD<D> u = vi.template cast<double>();
@@ -274,6 +307,8 @@ struct Generator {
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
       if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat)
         flat[nflat++] = {p.foot, p.normal, k, -1, static_cast<Index>(out.size())};
+      else if (ncurved < kMaxFlat)
+        curved[ncurved++] = {k, p, p.foot - g.depth * p.normal, ug, ug_slip, g.beta};
       emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
            p.normal, 1);
     }
@@ -294,6 +329,7 @@ struct Generator {
         }
       for (const ReflectionWord& w : words) emit_corner(out, corners, i, x, u, flat.data(), w);
     }
+    for (int c = 0; c < ncurved; ++c) plane_edges(out, corners, i, x, curved[c], flat, nflat);
     return {penetrated, no_root};
   }
 };

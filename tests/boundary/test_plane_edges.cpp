@@ -22,6 +22,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/step_file.hpp"
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/geometry/cylinder.hpp"
 #include "curvsph/geometry/plane.hpp"
@@ -81,15 +82,7 @@ std::vector<double> fill(const WallSet<3>& walls, GhostMapKind map, const Cells&
   return s;
 }
 
-void write_step(const TopoDS_Shape& shape, const std::filesystem::path& path) {
-  STEPControl_Controller::Init();
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  Interface_Static::SetCVal("write.step.unit", "M");
-  UnitsMethods::SetCasCadeLengthUnit(1000.0);
-  STEPControl_Writer w;
-  ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
-  ASSERT_EQ(w.Write(path.c_str()), IFSelect_RetDone);
-}
+using curvsph::test::write_step;
 
 TEST(PlaneEdges, CylinderFloorRimFillsAsTheInfiniteCylinder) {
   const double support = 2 * kH;

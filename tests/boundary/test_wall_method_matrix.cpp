@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "../support/quiet_run.hpp"
+#include "../support/step_file.hpp"
 #include "../support/test_meshes.hpp"
 #include "curvsph/io/case_file.hpp"
 
@@ -39,15 +40,7 @@ fs::path scratch() {
   return d;
 }
 
-void write_step(const TopoDS_Shape& shape, const fs::path& path) {
-  STEPControl_Controller::Init();
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  Interface_Static::SetCVal("write.step.unit", "M");
-  UnitsMethods::SetCasCadeLengthUnit(1000.0);
-  STEPControl_Writer w;
-  ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
-  ASSERT_EQ(w.Write(path.c_str()), IFSelect_RetDone);
-}
+using curvsph::test::write_step;
 
 struct Container {
   int dim;

@@ -18,6 +18,7 @@
 #include <numeric>
 #include <random>
 
+#include "../support/step_file.hpp"
 #include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/cad/cad_import.hpp"
 #include "curvsph/cad/cad_solid_wall.hpp"
@@ -34,16 +35,7 @@ std::filesystem::path temp_dir() {
   return d;
 }
 
-// `shape` (in metres) written to dir/name as a STEP file in metres.
-void write_step(const TopoDS_Shape& shape, const std::filesystem::path& path) {
-  STEPControl_Controller::Init();
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  Interface_Static::SetCVal("write.step.unit", "M");
-  UnitsMethods::SetCasCadeLengthUnit(1000.0);
-  STEPControl_Writer w;
-  ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
-  ASSERT_EQ(w.Write(path.c_str()), IFSelect_RetDone);
-}
+using curvsph::test::write_step;
 
 WallSet<3> read_case_walls(const std::filesystem::path& dir, const std::string& file,
                            const std::string& fluid) {

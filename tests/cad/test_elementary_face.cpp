@@ -17,6 +17,7 @@
 #include <iostream>
 #include <random>
 
+#include "../support/step_file.hpp"
 #include "curvsph/cad/cad_solid_wall.hpp"
 #include "curvsph/geometry/wall_parser.hpp"
 
@@ -24,15 +25,7 @@ using namespace curvsph;
 
 namespace {
 
-void write_step(const TopoDS_Shape& shape, const std::filesystem::path& path) {
-  STEPControl_Controller::Init();
-  Interface_Static::SetCVal("xstep.cascade.unit", "M");
-  Interface_Static::SetCVal("write.step.unit", "M");
-  UnitsMethods::SetCasCadeLengthUnit(1000.0);
-  STEPControl_Writer w;
-  ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
-  ASSERT_EQ(w.Write(path.c_str()), IFSelect_RetDone);
-}
+using curvsph::test::write_step;
 
 TEST(ElementaryFace, PlanesAndCylindersAnswerAsTheirNurbs) {
   const auto dir =

@@ -110,20 +110,9 @@ void add_clipped(const BoundaryElements<3>& el, std::size_t j, const std::vector
   }
 }
 
-void copy_element(const BoundaryElements<2>& el, std::size_t j, BoundaryElements<2>& out) {
-  BoundaryElements<2> one;
-  one.centre = {el.centre[j]};
-  one.normal = {el.normal[j]};
-  one.area = {el.area[j]};
-  one.vertices = {el.vertices[j]};
-  one.vertex_count = {el.vertex_count[j]};
-  one.curvature = {el.curvature[j]};
-  one.gap = {el.gap[j]};
-  out.append(one);
-}
-
-void copy_element(const BoundaryElements<3>& el, std::size_t j, BoundaryElements<3>& out) {
-  BoundaryElements<3> one;
+template <int D>
+void copy_element(const BoundaryElements<D>& el, std::size_t j, BoundaryElements<D>& out) {
+  BoundaryElements<D> one;
   one.centre = {el.centre[j]};
   one.normal = {el.normal[j]};
   one.area = {el.area[j]};

@@ -120,6 +120,18 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
         }
         continue;
       }
+      // A corner image y = c.v + M (x - c.v) of x, kept if within the support of either face.
+      const auto corner_image = [&](const Vec2d& y, const Mat2& M, int reflections) {
+        if (!(std::min(segment_distance(y, A), segment_distance(y, B)) < support)) return;
+        FacetImage<2> im;
+        im.x = y;
+        im.M = M;
+        im.foot = c.v;
+        im.normal = A.normal;
+        im.depth = im.source_depth = dist;
+        im.reflections = reflections;
+        push(im);
+      };
       const double nd = std::numbers::pi / c.theta;
       const int order = static_cast<int>(std::lround(nd));
       if (order < 2 || order > 6 || std::abs(nd - order) > 1e-6 * order) {
@@ -141,15 +153,7 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
             if ((y - c.v).dot(nrm[static_cast<std::size_t>(last)]) >
                 (y - c.v).dot(nrm[static_cast<std::size_t>(1 - last)]) + tol)
               continue;
-            if (!(std::min(segment_distance(y, A), segment_distance(y, B)) < support)) continue;
-            FacetImage<2> im;
-            im.x = y;
-            im.M = M;
-            im.foot = c.v;
-            im.normal = A.normal;
-            im.depth = im.source_depth = dist;
-            im.reflections = len % 2 == 0 ? 2 : 3;
-            push(im);
+            corner_image(y, M, len % 2 == 0 ? 2 : 3);
           }
         continue;
       }
@@ -165,15 +169,7 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
               (M - RB).norm() < 1e-9)
             continue;
           const Vec2d y = c.v + M * rel;
-          if (!(std::min(segment_distance(y, A), segment_distance(y, B)) < support)) continue;
-          FacetImage<2> im;
-          im.x = y;
-          im.M = M;
-          im.foot = c.v;
-          im.normal = A.normal;
-          im.depth = im.source_depth = dist;
-          im.reflections = refl ? 3 : 2;
-          push(im);
+          corner_image(y, M, refl ? 3 : 2);
         }
         Rk = rot * Rk;
       }

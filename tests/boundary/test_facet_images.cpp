@@ -64,8 +64,11 @@ double shepard_at(const Wedge& w, const Vec2d& x0, double h, int n) {
       const int ni = facet_images<2>(x, near, nf, support, im, 32);
       s += dA * W.value(static_cast<Real>((x - x0).norm()));
       for (int g = 0; g < ni; ++g) {
-        EXPECT_FALSE(w.inside(im[g].x)) << "image of (" << x.transpose() << ") in the fluid";
-        s += dA * W.value(static_cast<Real>((im[g].x - x0).norm()));
+        // Guards (no volume) may lie anywhere; an image with a volume never in the fluid.
+        if (im[g].weight > 0) {
+          EXPECT_FALSE(w.inside(im[g].x)) << "image of (" << x.transpose() << ") in the fluid";
+        }
+        s += dA * im[g].weight * W.value(static_cast<Real>((im[g].x - x0).norm()));
       }
     }
   return s;
@@ -114,22 +117,80 @@ TEST_P(AnyAngleCorner, ImagesFillTheSupport) {
 
 INSTANTIATE_TEST_SUITE_P(Angles, AnyAngleCorner, ::testing::Values(50.0, 75.0, 100.0, 110.0));
 
-TEST(ConvexCorner, VertexRegionGetsThePointReflectionOnly) {
-  // Fluid outside a 90 degree corner (interior angle 270): the solid is x < 0, y < 0, face A
-  // along the negative x axis (normal +y), B along the negative y axis (normal +x). The point
-  // (0.3, 0.4) projects beyond both faces: the vertex is its closest point.
-  WallFacet<2> faces[2] = {{Vec2d(-5, 0), Vec2d(0, 0), Vec2d(0, 1)},
-                           {Vec2d(0, 0), Vec2d(0, -5), Vec2d(1, 0)}};
+class ConvexFill : public ::testing::TestWithParam<double> {};
+
+TEST_P(ConvexFill, ImagesFillTheSupport) {
+  // Fluid outside a corner (interior angle theta > 180 degrees, the solid a wedge of
+  // 360 - theta): the fluid and its images must give the kernel's own integral, 1, at points
+  // near the vertex, on rays close to each face and across the vertex from the solid.
+  // Reference 1; before, a single image kept while its particle projects onto its face and the
+  // point reflection through the vertex beyond both covered the solid up to three times: worst
+  // sums 1.09 (200), 1.32 (240), 1.55 (270), 1.95 (300; numpy, the same midpoint rule).
+  const double theta = GetParam() * kPi / 180, h = 1.0;
+  const Wedge w(theta, 10.0);
+  double worst = 0;
+  for (double frac : {0.05, 0.3, 0.5, 0.7, 0.95})
+    for (double r : {0.25, 1.0, 1.5}) {
+      const double a = frac * theta;
+      worst = std::max(
+          worst, std::abs(shepard_at(w, r * h * Vec2d(std::cos(a), std::sin(a)), h, 400) - 1));
+    }
+  std::cout << GetParam() << " degree convex corner: worst |sum - 1| " << worst << "\n";
+  EXPECT_LT(worst, 1e-3) << "theta = " << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, ConvexFill, ::testing::Values(200.0, 225.0, 240.0, 270.0, 300.0));
+
+TEST(ConvexCorner, SharesSumToOneAtEverySolidPoint) {
+  // Fluid outside a corner of interior angle theta: every point y of the solid wedge within the
+  // support of the faces is the image of three fluid points, its reflections across A's and
+  // B's lines and through the vertex (each in the fluid for a solid angle below 180 degrees).
+  // Reference: the shares of the images found at y, over the three sources, sum to 1 (a
+  // partition of unity: the solid is covered once, pointwise).
+  std::mt19937 rng(7);
+  for (double deg : {200.0, 225.0, 240.0, 270.0, 300.0}) {
+    const double theta = deg * kPi / 180, support = 2.0;
+    const Wedge w(theta, 10.0);
+    const WallFacet<2> faces[2] = {w.A, w.B};
+    std::uniform_real_distribution<double> R(0.01, 1.9), Phi(theta, 2 * kPi);
+    for (int k = 0; k < 200; ++k) {
+      const double r = R(rng), phi = Phi(rng);
+      const Vec2d y(r * std::cos(phi), r * std::sin(phi));
+      const Vec2d sources[3] = {y - 2 * y.dot(w.A.normal) * w.A.normal,
+                                y - 2 * y.dot(w.B.normal) * w.B.normal, -y};
+      double sum = 0;
+      for (const Vec2d& x : sources) {
+        ASSERT_TRUE(w.inside(x)) << deg << " degrees: a source of (" << y.transpose() << ")";
+        FacetImage<2> im[32];
+        const int n = facet_images<2>(x, faces, 2, support, im, 32);
+        for (int g = 0; g < n; ++g)
+          if ((im[g].x - y).norm() < 1e-12) sum += im[g].weight;
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-12) << deg << " degrees at (" << y.transpose() << ")";
+    }
+  }
+}
+
+TEST(ConvexCorner, ParticlesNearTheVertexKeepAGuard) {
+  // A 300 degree corner (a 60 degree spike): a point that projects onto face A but whose
+  // reflection across A lies in the fluid beyond B has no share of A's image, and one beyond
+  // both faces whose point image lies in the fluid has none of that; each keeps an image of no
+  // volume at its own distance (the contact layer's and the wall force's), which the
+  // reference, the distance to A's line and to the vertex, must give.
+  const Wedge w(300 * kPi / 180, 10.0);
+  const WallFacet<2> faces[2] = {w.A, w.B};
   FacetImage<2> im[32];
-  int n = facet_images<2>(Vec2d(0.3, 0.4), faces, 2, 2.0, im, 32);
+  const Vec2d onto_a(0.02, 0.05);  // polar angle 68 degrees: projects onto A (along +x)
+  int n = facet_images<2>(onto_a, faces, 2, 2.0, im, 32);
   ASSERT_EQ(n, 1);
-  EXPECT_NEAR((im[0].x - Vec2d(-0.3, -0.4)).norm(), 0, 1e-14);
-  EXPECT_NEAR(im[0].source_depth, 0.5, 1e-14);
-  // Above face A, left of the vertex: A's single image only.
-  n = facet_images<2>(Vec2d(-0.3, 0.4), faces, 2, 2.0, im, 32);
+  EXPECT_EQ(im[0].weight, 0.0);
+  EXPECT_NEAR(im[0].source_depth, 0.05, 1e-14);
+  const Vec2d beyond(-0.01, 0.05);  // 101 degrees: beyond both faces, its point image too
+  n = facet_images<2>(beyond, faces, 2, 2.0, im, 32);
   ASSERT_EQ(n, 1);
-  EXPECT_NEAR((im[0].x - Vec2d(-0.3, -0.4)).norm(), 0, 1e-14);
-  EXPECT_EQ(im[0].reflections, 1);
+  EXPECT_EQ(im[0].weight, 0.0);
+  EXPECT_NEAR(im[0].source_depth, beyond.norm(), 1e-14);
+  EXPECT_NEAR((im[0].x + beyond).norm(), 0, 1e-14);
 }
 
 TEST(PolygonWall, SideAtAnAcuteVertexFromThePseudoNormal) {

@@ -44,6 +44,42 @@ bool shared_vertex(const WallFacet<2>& A, const WallFacet<2>& B, double tol, Cor
   return false;
 }
 
+// The convex corners' partition of unity (facet_images.hpp): the raw share of an image at
+// distance D from the member's face segment (or from the vertex), q^2 / D^2 with
+// q = 1 - D / support, none beyond the support. 1/D^2 makes the shares depend on the angle
+// alone close to the vertex and gives the face an image sits on all of it; q^2 takes a
+// member's share to 0 where its source leaves the support of the wall.
+double convex_share(double D, double support) {
+  if (!(D < support)) return 0;
+  const double q = 1 - D / support;
+  const double Dm = std::max(D, 1e-12 * support);
+  return q * q / (Dm * Dm);
+}
+
+// The vertex member's factor. Where the solid is acute (alpha < 90 degrees) the particles
+// beyond both faces have no share of a face's image (their reflections land in the fluid), and
+// the point image gives them one: it takes most of the solid near the vertex there, the faces'
+// members the rest. Elsewhere the faces share the solid alone. Chosen by the step and ramp
+// tanks of docs/geometry.md (factors 0, 1, 2, 4, 8, 20, 40, 100 measured).
+constexpr double kVertexFactor = 40;
+double vertex_factor(const Corner& c) {
+  return 2.0 * std::numbers::pi - c.theta < 0.5 * std::numbers::pi - 1e-9 ? kVertexFactor : 0.0;
+}
+
+// The three members' shares at a point y of the solid wedge of the convex corner c.
+struct ConvexShares {
+  double a, b, v;
+};
+ConvexShares convex_shares(const Vec2d& y, const WallFacet<2>& A, const WallFacet<2>& B,
+                           const Corner& c, double support) {
+  const double fa = convex_share(segment_distance(y, A), support);
+  const double fb = convex_share(segment_distance(y, B), support);
+  const double fv = vertex_factor(c) * convex_share((y - c.v).norm(), support);
+  const double sum = fa + fb + fv;
+  if (!(sum > 0)) return {0, 0, 0};
+  return {fa / sum, fb / sum, fv / sum};
+}
+
 bool same_line(const WallFacet<2>& A, const WallFacet<2>& B, double tol) {
   return A.normal.dot(B.normal) > 1.0 - 1e-12 && std::abs((B.a - A.a).dot(A.normal)) <= tol;
 }
@@ -77,17 +113,30 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
     if (!(d > 0 && d < support)) continue;
     const Vec2d y = x - 2.0 * d * A.normal;
     bool ok = true;
+    double weight = 1;
     for (int r = 0; r < m && ok; ++r) {
       if (r == q) continue;
       const WallFacet<2>& B = faces[keep[r]];
       Corner c;
       if (!shared_vertex(A, B, tol, c)) continue;
-      if (c.concave)
+      if (c.concave) {
         ok = (y - c.v).dot(A.normal) <= (y - c.v).dot(B.normal) + tol;  // A's side of the bisector
+        continue;
+      }
+      // Convex: A's share of the solid wedge at y, none outside it (y in the fluid beyond B).
+      if ((y - c.v).dot(B.normal) > tol)
+        weight = 0;
       else
-        ok = (x - c.v).dot(c.ea) >= 0;  // x projects onto A
+        weight *= convex_shares(y, A, B, c, support).a;
     }
     if (!ok) continue;
+    if (!(weight > 0)) {
+      // No share, but x projects onto A: a guard of no volume (facet_images.hpp).
+      const Vec2d t = A.b - A.a;
+      const double u = (x - A.a).dot(t) / t.squaredNorm();
+      if (!(u >= 0 && u <= 1)) continue;
+      weight = 0;
+    }
     FacetImage<2> im;
     im.x = y;
     im.M = reflection(A.normal);
@@ -95,6 +144,7 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
     im.normal = A.normal;
     im.depth = im.source_depth = d;
     im.reflections = 1;
+    im.weight = weight;
     push(im);
   }
 
@@ -108,14 +158,21 @@ int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, doubl
       const Vec2d rel = x - c.v;
       const double dist = rel.norm();
       if (!c.concave) {
-        if (rel.dot(c.ea) < 0 && rel.dot(c.eb) < 0 && dist > 0 && dist < support) {
+        // The point image: the vertex member's share where it lies in the solid; beyond both
+        // faces (the vertex x's closest point) a guard of no volume where it does not.
+        const Vec2d y = c.v - rel;
+        const bool solid = (y - c.v).dot(A.normal) <= tol && (y - c.v).dot(B.normal) <= tol;
+        const bool beyond = rel.dot(c.ea) < 0 && rel.dot(c.eb) < 0;
+        const double wv = solid ? convex_shares(y, A, B, c, support).v : 0.0;
+        if (dist > 0 && dist < support && (wv > 0 || beyond)) {
           FacetImage<2> im;
-          im.x = c.v - rel;
+          im.x = y;
           im.M = -Mat2::Identity();
           im.foot = c.v;
           im.normal = rel / dist;
           im.depth = im.source_depth = dist;
           im.reflections = 1;
+          im.weight = wv;
           push(im);
         }
         continue;

@@ -20,9 +20,24 @@
 //    its last face's side of the exterior bisector, as the singles above are, so that the
 //    exterior is covered once (flat_corners.hpp has the sectors; below about 24 degrees K is
 //    capped at 7 and a gap stays).
-// At a convex corner (theta > pi, fluid outside) a single image is kept only while x projects
-// onto its own face; x in the vertex's own wedge (projecting beyond both faces) gets the
-// point reflection 2 v - x, the mirror of its closest point (the vertex), as box edges give.
+// At a convex corner (theta > pi, fluid outside) the solid is a wedge of angle
+// alpha = 2 pi - theta < pi. Every point y of it is the image of three fluid points: its
+// reflections across A's and B's lines and through the vertex (2 v - y). The images are
+// weighted by a partition of unity over the solid, s_A(y) + s_B(y) + s_V(y) = 1 (the
+// `weight`, the ghost's beta: a share of its source's volume in every sum the ghost enters),
+// so the solid is covered once, pointwise: s_X = f_X / (f_A + f_B + f_V), f_A = f(D_A),
+// f_B = f(D_B) with D the distance from y to that face's segment, f_V = c f(|y - v|),
+// f(D) = (1 - D/2h)^2 / D^2 (0 beyond the support 2h). 1/D^2 gives a face all of an image
+// that lies on it and makes the shares depend on the angle alone near the vertex (a smooth
+// blend, no seam as a cut at the solid's bisector has); (1 - D/2h)^2 takes a member's share
+// to 0 before its source leaves the support of the wall (a reflection keeps the distance to
+// the face it reflects across). c = 40 where the solid is acute (alpha < 90 degrees: the
+// particles beyond both faces then have no share of a face's image), else 0: chosen by the
+// tanks of docs/geometry.md. A particle that projects onto a face but has no share of its
+// image, or lies beyond both faces without a share of the point image, keeps that image as a
+// guard of no volume (weight 0): the contact layer and the wall force find a particle's
+// distance to its wall through its own single images (ghost_boundary.cpp), and without it a
+// particle could reach the vertex unseen and be thrown off when it next projects onto a face.
 //
 // Each image carries the orthogonal map M with y = v + M (x - v) (a single: the reflection
 // I - 2 n n^T). Velocities compose the single reflections' images, as box corners do: the
@@ -46,6 +61,7 @@ struct FacetImage {
   double depth = 0;                  // image behind the wall (a single: d)
   double source_depth = 0;           // x in front of it (a single: d)
   std::uint8_t reflections = 1;      // 1: a single (or the vertex image), 2: a rotation, 3: ...
+  double weight = 1;                 // share of its source's volume (convex corners; 0: guard)
 };
 
 // The images of x (faces: those within 2 supports of x, facets_near) within `support` of the

@@ -118,7 +118,8 @@ struct Generator {
   static constexpr int kMaxFlat = 12;
 
   // A faceted wall (a polygon): the images of facet_images.hpp, flat faces (kappa = 0, so
-  // every map is the mirror, beta = 1). Its single images join `flat` (group k) for the
+  // every map is the mirror, beta = 1 but at convex corners, where beta is the image's share
+  // of the solid, 0 for a guard). Its single images join `flat` (group k) for the
   // corners with other walls' flat faces (flat_corners.hpp). False for walls that are not
   // faceted.
   bool faceted(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
@@ -140,10 +141,12 @@ struct Generator {
       const bool single = im.reflections == 1 && (im.M - (Eigen::Matrix<double, D, D>::Identity() -
                                                           2.0 * im.normal * im.normal.transpose()))
                                                          .norm() < 1e-12;
-      if (single && nflat < kMaxFlat)
+      // Shares of a convex corner's solid and guards stay out of the other walls' corners:
+      // flat_corners.hpp's images stand for whole sources.
+      if (single && im.weight == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {im.foot, im.normal, k, k,
                                                    static_cast<Index>(out.size())};
-      emit(out, i, k, im.x, ug, slip, 1.0, im.depth, im.source_depth, im.foot, im.normal,
+      emit(out, i, k, im.x, ug, slip, im.weight, im.depth, im.source_depth, im.foot, im.normal,
            im.reflections);
     }
     return true;

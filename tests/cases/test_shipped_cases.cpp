@@ -35,6 +35,9 @@ TEST(ShippedCases, FreeSurfaceCasesTakeTheFreeSurfaceDefaults) {
   const Case p = read_case(dir / "poiseuille_2d.yaml");
   EXPECT_FALSE(p.free_surface_defaults);
   EXPECT_EQ(p.boundary.ghost_pressure, "copy");
+  // Barker's cases, which sum the density (Barker eq. 8), ask for it: the default is continuity.
+  EXPECT_EQ(p.density.method, DensitySpec::Method::summation);
+  EXPECT_EQ(read_case(dir / "couette.yaml").density.method, DensitySpec::Method::summation);
 }
 
 }  // namespace

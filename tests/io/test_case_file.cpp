@@ -245,6 +245,23 @@ TEST(CaseFile, ContinuityAcceptsDeltaSph) {
   EXPECT_DOUBLE_EQ(c.density.delta_sph, 0.2);
 }
 
+// Without a density key every case, confined or not, takes the continuity density with
+// Antuono's delta-SPH term at 0.1; transport_velocity, whose density follows the transported
+// positions, keeps summation.
+TEST(CaseFile, DensityDefaultsToContinuityWithDeltaSph) {
+  YAML::Node root = valid();
+  root.remove("density");
+  const Case c = read_case(root, "c.yaml");
+  EXPECT_FALSE(c.free_surface_defaults);
+  EXPECT_EQ(c.density.method, DensitySpec::Method::continuity);
+  EXPECT_DOUBLE_EQ(c.density.delta_sph, 0.1);
+  EXPECT_EQ(c.density.diffusion, DensitySpec::Diffusion::antuono);
+  root["transport_velocity"] = YAML::Load("{}");
+  EXPECT_EQ(read_case(root, "c.yaml").density.method, DensitySpec::Method::summation);
+  root["density"] = YAML::Load("{method: continuity}");
+  EXPECT_THROW(read_case(root, "c.yaml"), InputError);
+}
+
 TEST(CaseFile, SetWithoutEquals) {
   expect_error_set({"resolution.dx"}, "--set", "resolution.dx", "key.path=value");
   expect_error_set({"=3"}, "--set", "=3", "key.path=value");

@@ -125,17 +125,20 @@ TEST(StrayParticles, MoreThanTheAllowedFractionRemovedStopsTheRun) {
 
 TEST(StrayParticles, SummationDensityOfAFreeBlobIsClampedNotFatal) {
   // A free square of fluid with summation density: its edge particles see a third to a half
-  // of a full support, rho < 0.7 rho0 (the corners: a quarter of it).
+  // of a full support, rho < 0.7 rho0 (the corners: a quarter of it). Summation is asked for
+  // (the default, continuity, starts every particle at rho0).
   YAML::Node root = leaving_case();
   root["fluids"][0]["velocity"] = YAML::Load("[0, 0]");
   root["time"]["end"] = 0.002;
+  root["density"] = YAML::Load("{method: summation}");
   const auto m = test::run_quiet(read_case(root, "blob"), 1);
   const long clamped = m["density_clamped"].get<long>();
   EXPECT_GT(clamped, 0);
   EXPECT_EQ(m["particles_removed"].get<long>(), 0);
-  root["density"] = YAML::Load("{clamp: [0.9, 1.1]}");  // a narrower range clamps more
+  root["density"] =
+      YAML::Load("{method: summation, clamp: [0.9, 1.1]}");  // a narrower range clamps more
   EXPECT_GT(test::run_quiet(read_case(root, "blob"), 1)["density_clamped"].get<long>(), clamped);
-  root["density"] = YAML::Load("{clamp: false}");
+  root["density"] = YAML::Load("{method: summation, clamp: false}");
   EXPECT_EQ(test::run_quiet(read_case(root, "blob"), 1)["density_clamped"].get<long>(), 0);
   root["density"] = YAML::Load("{clamp: [1.2, 1.3]}");
   EXPECT_THROW(read_case(root, "blob"), InputError);

@@ -62,7 +62,7 @@ const Row kRows[] = {
 {"eos.p0", "number", "", "0", "Pa", "background pressure"},
 
 {"density", "map", "", "optional", "-", "how the density evolves"},
-{"density.method", "choice: summation | continuity", "", "derived: continuity under gravity across a non-periodic axis, else summation", "-", "density by kernel summation or by the continuity equation"},
+{"density.method", "choice: summation | continuity", "", "derived: continuity, summation with transport_velocity", "-", "density by kernel summation or by the continuity equation"},
 {"density.delta_sph", "number", "[0, inf)", "0.1", "-", "delta-SPH density diffusion coefficient (continuity only)"},
 {"density.diffusion_term", "choice: antuono | molteni | fourtakas", "", "antuono", "-", "delta-SPH diffusion term (continuity only)"},
 {"density.shifting", "number", "[0, 1]", "0", "-", "particle shifting coefficient (typical 0.01-0.05)"},

@@ -243,7 +243,15 @@ class WallMethod : public ::testing::TestWithParam<std::tuple<std::string, std::
 
 TEST_P(WallMethod, HoldsWaterAtRest) {
   const auto [wall, method] = GetParam();
-  const Container s = setup(wall);
+  Container s = setup(wall);
+  // The plain mirror in the faceted sphere runs at R = 10 dx: it miscounts the ghosts' volume
+  // at a concave wall (Barker: an error of order dx / R, which mirror_beta's volume factor
+  // corrects), and its packing does not converge there (node-density spread 0.025 after 50
+  // and 400 steps at R = 8 dx). Measured with this test's case at 0.05 s (deep): R = 8, 10,
+  // 12, 16 dx: 0.0547, 0.0253, 0.0170, 0.0109 (the analytic sphere 0.0459, 0.0251, 0.0159,
+  // 0.0104; the periodic cylinder 0.0223, 0.0189, 0.0070, 0.0047); docs/geometry.md, note (f).
+  const bool mirror_in_mesh_sphere = wall == "stl_sphere" && method == "mirror";
+  if (mirror_in_mesh_sphere) s.dx = 0.01;
   const auto m = test::run_quiet(read_case(make_case(s, method), "matrix.yaml"), 1);
   const double t_end = s.dim == 2 ? 0.2 : 0.05;
   std::cout << fmt::format(
@@ -264,13 +272,7 @@ TEST_P(WallMethod, HoldsWaterAtRest) {
   // behind the other planes, the two floor-corner particles at -0.47 rho g H each; now each
   // is clipped by the others, boundary/integrals/wall_clip.hpp).
   ASSERT_TRUE(m["pressure_l2_error_deep"].is_number()) << "no particle 2h below the surface";
-  // One cell misses 5 %: the plain mirror in the faceted sphere, 0.058. The packing's lid
-  // through the sphere's centre gets corner images with the sphere (boundary/ghost/
-  // plane_edges.hpp): mirror_beta 0.041 -> 0.020, density_preserving 0.042 -> 0.032, but the
-  // mirror, whose packing does not converge at a concave wall (node-density spread 0.025 at 50
-  // and at 400 steps), 0.045 -> 0.058 (docs/geometry.md, note (f)). Its bound is that figure.
-  const bool mirror_in_mesh_sphere = wall == "stl_sphere" && method == "mirror";
-  EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), mirror_in_mesh_sphere ? 0.065 : 0.05);
+  EXPECT_LT(m["pressure_l2_error_deep"].get<double>(), 0.05);
 }
 
 // The `plane` tank with integrals, its domain box ending at the side walls and the floor, so

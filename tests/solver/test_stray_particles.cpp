@@ -12,6 +12,7 @@
 #include "curvsph/core/error.hpp"
 #include "curvsph/geometry/box.hpp"
 #include "curvsph/geometry/circle.hpp"
+#include "curvsph/geometry/wall_parser.hpp"
 #include "curvsph/solver/stray_particles.hpp"
 
 namespace curvsph {
@@ -91,6 +92,36 @@ TEST(StrayParticles, RemovalBoxIsTheDomainOrTheGrownParticleAndTankBox) {
       removal_box<2>(true, Vec3d(0, 0, 0), Vec3d(1, 1, 0), {true, false, false}, x, none, 0.1);
   EXPECT_FALSE(dom.outside(Vec<2>(5, 0.5)));  // periodic axis: never
   EXPECT_TRUE(dom.outside(Vec<2>(0.5, 1.01)));
+}
+
+// A tank that is not a box wall (a degree-1 NURBS polygon 4 long, the water in its first metre)
+// bounds the removal box as the box wall does: the water that runs along the tank stays in the
+// run. Before, only box walls counted, and a dam break over a step in a polygon tank lost its
+// front at x = 2 (the particles' box [0, 1] grown by 1).
+TEST(StrayParticles, RemovalBoxHoldsEveryBoundedWall) {
+  const std::vector<Vec<2>> x{Vec<2>(0.1, 0.1), Vec<2>(1, 0.5)};
+  const WallSet<2> polygon = parse_walls<2>(YAML::Load(R"(
+- shape: nurbs_curve
+  degree: 1
+  control_points: [[0, 1], [0, 0], [2, 0], [2, 0.3], [4, 0.3], [4, 1]]
+  knots: [0, 0, 1, 2, 3, 4, 5, 5]
+  fluid: left
+)"),
+                                            "geom.yaml", ".");
+  const auto in_tank =
+      removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false}, x, polygon, 0.1);
+  // The box of the particles and the polygon, [0, 4] x [0, 1], grown by 4 on every side.
+  EXPECT_FALSE(in_tank.outside(Vec<2>(7.9, 0.5)));
+  EXPECT_TRUE(in_tank.outside(Vec<2>(8.1, 0.5)));
+  EXPECT_FALSE(in_tank.outside(Vec<2>(1, -3.9)));
+  EXPECT_TRUE(in_tank.outside(Vec<2>(1, 5.1)));
+  // An infinite wall adds nothing beyond the particles' own grown box.
+  WallSet<2> floor = parse_walls<2>(YAML::Load("[{shape: plane, point: [0, 0], normal: [0, 1]}]"),
+                                    "geom.yaml", ".");
+  const auto on_floor =
+      removal_box<2>(false, Vec3d::Zero(), Vec3d::Zero(), {false, false, false}, x, floor, 0.1);
+  EXPECT_FALSE(on_floor.outside(Vec<2>(1.9, 0.5)));
+  EXPECT_TRUE(on_floor.outside(Vec<2>(2.1, 0.5)));
 }
 
 // 5 x 5 particles at x = 0.81 ... 0.89 moving at 10 m/s towards the domain's edge at x = 1,

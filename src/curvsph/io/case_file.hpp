@@ -152,7 +152,8 @@ struct Case {
   double dt_max = 0;   // 0: no cap
   long max_steps = 0;  // 0: unlimited
   // time.max_removed_fraction: particles that leave the domain (the domain box, or without one
-  // the box of the initial particles grown by twice its largest extent on every side) are
+  // the box of the initial particles and the bounded walls grown by its largest extent on
+  // every side, solver/stray_particles.hpp) are
   // removed and counted; more than this fraction of the initial count stops the run (exit 3).
   double max_removed_fraction = 0.01;
   double output_every = 0;  // 0: only first and last

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
+#include "curvsph/boundary/integrals/wall_elements.hpp"
 #include "curvsph/core/parallel.hpp"
 #include "curvsph/geometry/box.hpp"
 
@@ -61,13 +63,36 @@ RemovalBox<D> removal_box(bool has_domain, const Vec3d& lo, const Vec3d& hi,
     return r;
   }
   for (const auto& p : x) r.box.extend(p.template cast<double>());
-  // A tank is usually a box wall: the fluid may reach any part of it.
+  // The fluid may reach any part of a tank: a box wall, and any other bounded wall (a
+  // polygon, a circle, a CAD or STL solid) by the vertices of its boundary elements, which
+  // lie on the exact wall. Coarse elements do (a twentieth of the particles' box; the box is
+  // grown below by far more than a chord's sagitta), and the infinite walls (plane,
+  // cylinder) are clipped to the particles' box, so they add nothing to it. Before, only box walls
+  // counted: the water of a polygon tank running past its initial box by more than that box's size
+  // was removed while inside the tank.
   for (std::size_t k = 0; k < walls.size(); ++k)
     if (const auto* b = dynamic_cast<const BoxWall<D>*>(&walls[k])) {
       r.box.extend(b->min());
       r.box.extend(b->max());
     }
   if (r.box.isEmpty()) r.box = Eigen::AlignedBox<double, D>(VecD<D>::Zero(), VecD<D>::Zero());
+  {
+    const Bounds<D> clip = r.box;
+    const double spacing = std::max(r.box.sizes().maxCoeff() / 20, dx);
+    Eigen::AlignedBox<double, D> extent = r.box;
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      BoundaryElements<D> el;
+      try {
+        el = elements_from_wall<D>(walls[k], spacing, clip);
+      } catch (const std::invalid_argument&) {
+        continue;  // a wall type without elements, or an infinite wall outside the box
+      }
+      for (std::size_t e = 0; e < el.size(); ++e)
+        for (std::int32_t q = 0; q < el.vertex_count[e]; ++q)
+          extent.extend(el.vertices[e][static_cast<std::size_t>(q)]);
+    }
+    r.box = extent;
+  }
   const double grow = std::max(r.box.sizes().maxCoeff(), dx);
   r.box = Eigen::AlignedBox<double, D>(r.box.min().array() - grow, r.box.max().array() + grow);
   return r;

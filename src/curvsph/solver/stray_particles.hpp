@@ -20,7 +20,7 @@
 //    crossed in a single step) is put back the same way and counted (particles_projected;
 //    boundary.penetration: project), or stops the run (penetration: stop);
 //  - a particle outside the removal box (the domain box, or the box around the initial
-//    particles and the box walls grown by its largest extent on every side; periodic axes
+//    particles and the bounded walls grown by its largest extent on every side; periodic axes
 //    never) is removed and counted.
 // NaN and Inf stay fatal (exit 3): they are never one particle's business.
 #include <Eigen/Geometry>
@@ -67,7 +67,8 @@ struct RemovalBox {
   }
 };
 
-// The domain box when the case has one, else the bounding box of x and of the box walls grown
+// The domain box when the case has one, else the bounding box of x and of the bounded walls
+// (box walls; the others by their boundary elements: a polygon or CAD tank) grown
 // by its largest extent on every side (at least one dx).
 template <int D>
 RemovalBox<D> removal_box(bool has_domain, const Vec3d& lo, const Vec3d& hi,

@@ -8,6 +8,7 @@
 #include <limits>
 #include <utility>
 
+#include "curvsph/boundary/ghost/convex_box.hpp"
 #include "curvsph/boundary/ghost/facet_images.hpp"
 #include "curvsph/boundary/ghost/flat_corners.hpp"
 #include "curvsph/boundary/ghost/plane_edges.hpp"
@@ -131,8 +132,28 @@ struct Generator {
     if (nf < 0) return false;
     std::array<FacetImage<D>, kMaxImages> images;
     const int ni = facet_images<D>(x, faces.data(), nf, opt.support, images.data(), kMaxImages);
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat);
+    return true;
+  }
+
+  // A box with the fluid outside: the images of convex_box.hpp (the faces' shares of the solid
+  // near its edges and corners, guards), emitted as a faceted wall's.
+  void outside_box(std::vector<Record>& out, Index i, std::int32_t k, const BoxWall<D>& box,
+                   const VecD<D>& x, const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat,
+                   int& nflat) const {
+    std::array<FacetImage<D>, 2 * D + 1> images;
+    const int ni = box_outside_images<D>(x, box.min(), box.max(), opt.support, images.data(),
+                                         static_cast<int>(images.size()));
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat);
+  }
+
+  // Emits the images of x of wall k (facet_images.hpp); the whole single reflections join
+  // `flat` (group k) for the corners with other walls' flat faces (flat_corners.hpp).
+  void emit_images(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& u,
+                   const FacetImage<D>* images, int ni, std::array<FlatFace<D>, kMaxFlat>& flat,
+                   int& nflat) const {
     for (int g = 0; g < ni; ++g) {
-      const FacetImage<D>& im = images[static_cast<std::size_t>(g)];
+      const FacetImage<D>& im = images[g];
       const VecD<D> uw = walls[k].motion.velocity_at(im.foot);
       const VecD<D> slip = uw + im.M * (u - uw);
       const VecD<D> ug = opt.velocity == GhostVelocity::free_slip
@@ -149,7 +170,6 @@ struct Generator {
       emit(out, i, k, im.x, ug, slip, im.weight, im.depth, im.source_depth, im.foot, im.normal,
            im.reflections);
     }
-    return true;
   }
 
   // A wall of several faces (a CAD solid, faceted.hpp): one ghost per face onto which x
@@ -264,6 +284,17 @@ struct Generator {
     const std::int32_t nwalls = static_cast<std::int32_t>(walls.size());
 
     for (std::int32_t k = 0; k < nwalls; ++k) {
+      if (const BoxWall<D>* box = boxes[k]; box && box->side() == FluidSide::outside) {
+        const VecD<D> lo = box->min() - VecD<D>::Constant(support);
+        const VecD<D> hi = box->max() + VecD<D>::Constant(support);
+        if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+        if (!(box->closest(x).distance > 0)) {
+          penetrated = true;
+          continue;
+        }
+        outside_box(out, i, k, *box, x, u, flat, nflat);
+        continue;
+      }
       if (const BoxWall<D>* box = boxes[k]) {
         // Fluid inside a box: face by face.
         const VecD<D>& lo = box->min();
@@ -349,7 +380,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     multi_[k] = dynamic_cast<const MultiFace<D>*>(&walls[k]);
     faceted_[k] = dynamic_cast<const Faceted<D>*>(&walls[k]);
     const auto* box = dynamic_cast<const BoxWall<D>*>(&walls[k]);
-    boxes_[k] = box && box->side() == FluidSide::inside ? box : nullptr;
+    boxes_[k] = box;
   }
   const int max_threads = omp_get_max_threads();
   if (static_cast<int>(thread_ghosts_.size()) < max_threads) {

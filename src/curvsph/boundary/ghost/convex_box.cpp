@@ -7,16 +7,28 @@ namespace curvsph {
 
 template <int D>
 int box_outside_images(const VecD<D>& x, const VecD<D>& lo, const VecD<D>& hi, double support,
-                       FacetImage<D>* out, int max) {
+                       const std::function<bool(const VecD<D>&)>& in_fluid, FacetImage<D>* out,
+                       int max) {
   using Mat = Eigen::Matrix<double, D, D>;
   int n = 0;
-  // The faces' partition of unity at a point y of the box (convex_box.hpp): the sum of the
-  // raw shares of all 2D faces, each at y's distance to its plane.
-  const auto total_share = [&](const VecD<D>& y) {
-    double s = 0;
+  // The faces' partition of unity at a point y of the box (convex_box.hpp): the raw shares of
+  // the faces whose reflection of y is a fluid point, each at y's distance to its plane (face
+  // (a0, s0), y's own source's, counted without asking).
+  const auto total_share = [&](const VecD<D>& y, int a0, int s0) {
+    double total = 0;
     for (int a = 0; a < D; ++a)
-      s += convex_share(y[a] - lo[a], support) + convex_share(hi[a] - y[a], support);
-    return s;
+      for (int s = 0; s < 2; ++s) {
+        const double plane = s == 0 ? lo[a] : hi[a];
+        const double f = convex_share(std::abs(y[a] - plane), support);
+        if (!(f > 0)) continue;
+        if (a != a0 || s != s0) {
+          VecD<D> r = y;
+          r[a] = 2.0 * plane - y[a];
+          if (!in_fluid(r)) continue;
+        }
+        total += f;
+      }
+    return total;
   };
   const VecD<D> clamped = x.cwiseMax(lo).cwiseMin(hi);
   int clamped_axes = 0;
@@ -33,7 +45,7 @@ int box_outside_images(const VecD<D>& x, const VecD<D>& lo, const VecD<D>& hi, d
       for (int b = 0; b < D; ++b) in_box &= y[b] > lo[b] && y[b] < hi[b];
       double weight = 0;
       if (in_box) {
-        const double total = total_share(y);
+        const double total = total_share(y, a, s);
         weight = total > 0 ? convex_share(d, support) / total : 0.0;
       }
       // No share: a guard of no volume if x projects onto the face (its only single image).
@@ -68,9 +80,9 @@ int box_outside_images(const VecD<D>& x, const VecD<D>& lo, const VecD<D>& hi, d
   return n;
 }
 
-template int box_outside_images<2>(const Vec2d&, const Vec2d&, const Vec2d&, double, FacetImage<2>*,
-                                   int);
-template int box_outside_images<3>(const Vec3d&, const Vec3d&, const Vec3d&, double, FacetImage<3>*,
-                                   int);
+template int box_outside_images<2>(const Vec2d&, const Vec2d&, const Vec2d&, double,
+                                   const std::function<bool(const Vec2d&)>&, FacetImage<2>*, int);
+template int box_outside_images<3>(const Vec3d&, const Vec3d&, const Vec3d&, double,
+                                   const std::function<bool(const Vec3d&)>&, FacetImage<3>*, int);
 
 }  // namespace curvsph

@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <utility>
 
 #include "curvsph/boundary/ghost/convex_box.hpp"
+#include "curvsph/boundary/ghost/convex_edges.hpp"
 #include "curvsph/boundary/ghost/facet_images.hpp"
 #include "curvsph/boundary/ghost/flat_corners.hpp"
 #include "curvsph/boundary/ghost/plane_edges.hpp"
@@ -46,6 +48,14 @@ struct Generator {
   const std::vector<const Faceted<D>*>& faceted_walls;
   const std::vector<const MultiFace<D>*>& multi_walls;
   const GhostOptions<D>& opt;
+
+  // Whether r is a fluid point: outside every wall (the sources of the convex edges' shares,
+  // convex_box.hpp, convex_edges.hpp).
+  const std::function<bool(const VecD<D>&)> in_fluid = [this](const VecD<D>& r) {
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (!(walls[w].closest(r).distance > 0)) return false;
+    return true;
+  };
 
   using Record = typename GhostSet<D>::Record;
   using Corner = typename GhostSet<D>::Corner;
@@ -142,8 +152,8 @@ struct Generator {
                    const VecD<D>& x, const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat,
                    int& nflat) const {
     std::array<FacetImage<D>, 2 * D + 1> images;
-    const int ni = box_outside_images<D>(x, box.min(), box.max(), opt.support, images.data(),
-                                         static_cast<int>(images.size()));
+    const int ni = box_outside_images<D>(x, box.min(), box.max(), opt.support, in_fluid,
+                                         images.data(), static_cast<int>(images.size()));
     emit_images(out, i, k, u, images.data(), ni, flat, nflat);
   }
 
@@ -179,8 +189,8 @@ struct Generator {
   // bore meeting its end cap: the double image of that edge). False when x projects onto no
   // face (the region of a convex edge or vertex): the closest point answers there.
   bool multiface(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
-                 const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
-                 bool& no_root) const {
+                 const VecD<D>& u, const WallPoint<D>& c, std::array<FlatFace<D>, kMaxFlat>& flat,
+                 int& nflat, bool& no_root) const {
     if (!multi_walls[k]) return false;
     constexpr int kMaxFaces = 16;
     std::array<WallPoint<D>, kMaxFaces> fp;
@@ -197,7 +207,22 @@ struct Generator {
       if (dup) continue;
       used[static_cast<std::size_t>(nused++)] = f;
     }
-    if (nused == 0) return false;
+    if (nused == 0) {
+      // Beyond every face near x (a sharp edge's or vertex's region): where those faces are
+      // all planar, their shares cover the solid (convex_edges.hpp) and the closest-point image
+      // stays as a guard of no volume (the contact layer's, as facet_images.hpp's); else the
+      // closest point answers alone.
+      bool planar = nf > 0 && c.k1 == 0.0 && c.k2 == 0.0;
+      for (int f = 0; f < nf; ++f)
+        planar &=
+            fp[static_cast<std::size_t>(f)].k1 == 0.0 && fp[static_cast<std::size_t>(f)].k2 == 0.0;
+      if (!planar) return false;
+      const VecD<D> uw = walls[k].motion.velocity_at(c.foot);
+      const auto [ug, ug_slip] = images(u, uw, c.normal, 1.0);
+      emit(out, i, k, c.foot - c.distance * c.normal, ug, ug_slip, 0.0, c.distance, c.distance,
+           c.foot, c.normal, 1);
+      return true;
+    }
     std::array<int, kMaxFaces> curved{};
     int ncurved = 0;
     const int flat0 = nflat;
@@ -210,11 +235,18 @@ struct Generator {
       }
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
-      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat)
+      const bool planar = p.k1 == 0.0 && p.k2 == 0.0;
+      // A planar face's share of the solid at its image (convex_edges.hpp): below 1 near an
+      // edge where another face has the same image; such a share stays out of the corners.
+      const double share =
+          planar ? planar_share<D>(*multi_walls[k], VecD<D>(p.foot - g.depth * p.normal), p.normal,
+                                   p.distance, opt.support, in_fluid)
+                 : 1.0;
+      if (planar && share == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k, -1,
                                                    static_cast<Index>(out.size())};
-      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
-           p.normal, 1);
+      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, share * g.beta, g.depth, p.distance,
+           p.foot, p.normal, 1);
       if (p.k1 != 0.0 || p.k2 != 0.0) curved[static_cast<std::size_t>(ncurved++)] = used[q];
     }
     // Curved ghost x' reflected across a perpendicular planar face A: the image of x' behind
@@ -331,7 +363,7 @@ struct Generator {
       }
       if (!(p.distance < support)) continue;
       if (faceted(out, i, k, x, u, flat, nflat)) continue;
-      if (multiface(out, i, k, x, u, flat, nflat, no_root)) continue;
+      if (multiface(out, i, k, x, u, p, flat, nflat, no_root)) continue;
       const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
       if (!g.ok) {
         no_root = true;

@@ -128,13 +128,29 @@ struct Generator {
 
   static constexpr int kMaxFlat = 12;
 
+  // Single images that hold a share of a convex edge's solid (0 < share < 1: convex_box.hpp,
+  // convex_edges.hpp, facet_images.hpp), for their corners with other walls' flat faces.
+  struct SharedImage {
+    std::int32_t wall;
+    VecD<D> x, u, u_slip, normal;
+    double weight;
+  };
+  struct Shared {
+    std::array<SharedImage, kMaxFlat> image;
+    int n = 0;
+    void add(const SharedImage& s) {
+      if (n < kMaxFlat) image[static_cast<std::size_t>(n++)] = s;
+    }
+  };
+
   // A faceted wall (a polygon): the images of facet_images.hpp, flat faces (kappa = 0, so
   // every map is the mirror, beta = 1 but at convex corners, where beta is the image's share
   // of the solid, 0 for a guard). Its single images join `flat` (group k) for the
   // corners with other walls' flat faces (flat_corners.hpp). False for walls that are not
   // faceted.
   bool faceted(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
-               const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat) const {
+               const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
+               Shared& shared) const {
     constexpr int kMaxFaces = 16, kMaxImages = 32;
     std::array<WallFacet<D>, kMaxFaces> faces;
     if (!faceted_walls[k]) return false;
@@ -142,7 +158,7 @@ struct Generator {
     if (nf < 0) return false;
     std::array<FacetImage<D>, kMaxImages> images;
     const int ni = facet_images<D>(x, faces.data(), nf, opt.support, images.data(), kMaxImages);
-    emit_images(out, i, k, u, images.data(), ni, flat, nflat);
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat, shared);
     return true;
   }
 
@@ -150,18 +166,18 @@ struct Generator {
   // near its edges and corners, guards), emitted as a faceted wall's.
   void outside_box(std::vector<Record>& out, Index i, std::int32_t k, const BoxWall<D>& box,
                    const VecD<D>& x, const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat,
-                   int& nflat) const {
+                   int& nflat, Shared& shared) const {
     std::array<FacetImage<D>, 2 * D + 1> images;
     const int ni = box_outside_images<D>(x, box.min(), box.max(), opt.support, in_fluid,
                                          images.data(), static_cast<int>(images.size()));
-    emit_images(out, i, k, u, images.data(), ni, flat, nflat);
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat, shared);
   }
 
   // Emits the images of x of wall k (facet_images.hpp); the whole single reflections join
   // `flat` (group k) for the corners with other walls' flat faces (flat_corners.hpp).
   void emit_images(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& u,
                    const FacetImage<D>* images, int ni, std::array<FlatFace<D>, kMaxFlat>& flat,
-                   int& nflat) const {
+                   int& nflat, Shared& shared) const {
     for (int g = 0; g < ni; ++g) {
       const FacetImage<D>& im = images[g];
       const VecD<D> uw = walls[k].motion.velocity_at(im.foot);
@@ -177,6 +193,8 @@ struct Generator {
       if (single && im.weight == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {im.foot, im.normal, k, k,
                                                    static_cast<Index>(out.size())};
+      if (single && im.weight > 0 && im.weight < 1)
+        shared.add({k, im.x, ug, slip, im.normal, im.weight});
       emit(out, i, k, im.x, ug, slip, im.weight, im.depth, im.source_depth, im.foot, im.normal,
            im.reflections);
     }
@@ -190,7 +208,7 @@ struct Generator {
   // face (the region of a convex edge or vertex): the closest point answers there.
   bool multiface(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
                  const VecD<D>& u, const WallPoint<D>& c, std::array<FlatFace<D>, kMaxFlat>& flat,
-                 int& nflat, bool& no_root) const {
+                 int& nflat, Shared& shared, bool& no_root) const {
     if (!multi_walls[k]) return false;
     constexpr int kMaxFaces = 16;
     std::array<WallPoint<D>, kMaxFaces> fp;
@@ -242,6 +260,8 @@ struct Generator {
           planar ? planar_share<D>(*multi_walls[k], VecD<D>(p.foot - g.depth * p.normal), p.normal,
                                    p.distance, opt.support, in_fluid)
                  : 1.0;
+      if (planar && share > 0 && share < 1)
+        shared.add({k, p.foot - g.depth * p.normal, ug, ug_slip, p.normal, share});
       if (planar && share == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k, -1,
                                                    static_cast<Index>(out.size())};
@@ -302,6 +322,32 @@ struct Generator {
     }
   }
 
+  // A share of a convex edge's solid reflected across the flat faces of other walls
+  // perpendicular to its face (a box standing on a floor: below the floor, under the box's
+  // vertical edges), with the share: where flat_corners.hpp rotates the whole images of a
+  // concave edge, the shares of the convex edge above it turn with them (the sum at the foot
+  // of a box's vertical edge was 0.900). Velocities composed (emit_corner's rule).
+  void shared_edges(std::vector<Record>& out, std::vector<Corner>& corners, Index i,
+                    const SharedImage& s, const std::array<FlatFace<D>, kMaxFlat>& flat,
+                    int nflat) const {
+    for (int a = 0; a < nflat; ++a) {
+      const FlatFace<D>& A = flat[static_cast<std::size_t>(a)];
+      if (A.wall == s.wall || std::abs(A.normal.dot(s.normal)) > 1e-6) continue;
+      const double da = (s.x - A.foot).dot(A.normal);
+      if (!(da > 0 && da < opt.support)) continue;
+      const VecD<D> fa = s.x - da * A.normal;
+      const VecD<D> uwa = walls[A.wall].velocity(fa);
+      const VecD<D> u2 = images(s.u, uwa, A.normal, 1.0).first;
+      const VecD<D> u2_slip =
+          ghost_velocity<D>(GhostVelocity::free_slip, s.u_slip, uwa, A.normal, 1.0);
+      corners.push_back({static_cast<Index>(out.size()),
+                         {s.wall, A.wall, -1},
+                         {s.normal, A.normal, VecD<D>::Zero()},
+                         2});
+      emit(out, i, A.wall, fa - da * A.normal, u2, u2_slip, s.weight, da, da, fa, A.normal, 2);
+    }
+  }
+
   // Returns {penetrated, no_root}.
   std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
                                  std::vector<Record>& out, std::vector<Corner>& corners) const {
@@ -309,6 +355,7 @@ struct Generator {
     int nflat = 0;
     std::array<CurvedImage, kMaxFlat> curved;  // single images across curved walls
     int ncurved = 0;
+    Shared shared;
     bool penetrated = false, no_root = false;
     const VecD<D> x = xi.template cast<double>();
     const VecD<D> u = vi.template cast<double>();
@@ -324,7 +371,7 @@ struct Generator {
           penetrated = true;
           continue;
         }
-        outside_box(out, i, k, *box, x, u, flat, nflat);
+        outside_box(out, i, k, *box, x, u, flat, nflat, shared);
         continue;
       }
       if (const BoxWall<D>* box = boxes[k]) {
@@ -362,8 +409,8 @@ struct Generator {
         continue;
       }
       if (!(p.distance < support)) continue;
-      if (faceted(out, i, k, x, u, flat, nflat)) continue;
-      if (multiface(out, i, k, x, u, p, flat, nflat, no_root)) continue;
+      if (faceted(out, i, k, x, u, flat, nflat, shared)) continue;
+      if (multiface(out, i, k, x, u, p, flat, nflat, shared, no_root)) continue;
       const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
       if (!g.ok) {
         no_root = true;
@@ -396,6 +443,7 @@ struct Generator {
       for (const ReflectionWord& w : words) emit_corner(out, corners, i, x, u, flat.data(), w);
     }
     for (int c = 0; c < ncurved; ++c) plane_edges(out, corners, i, x, curved[c], flat, nflat);
+    for (int c = 0; c < shared.n; ++c) shared_edges(out, corners, i, shared.image[c], flat, nflat);
     return {penetrated, no_root};
   }
 };

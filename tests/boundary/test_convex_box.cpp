@@ -8,7 +8,10 @@
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -239,6 +242,56 @@ TEST(ConvexBox, CadAndStlBoxesFillTheSupport) {
   for (Vec3d& p : corner) p += Vec3d(4, 4, 4);
   EXPECT_LT(worst(lattice_sums(stl, edge, kH / 4, 4 * kH, 4 * kH), "STL cube edge"), 1e-9);
   EXPECT_LT(worst(lattice_sums(stl, corner, kH / 4, 4 * kH, 4 * kH), "STL cube corner"), 1e-9);
+}
+
+TEST(ConvexBox, CadPrismSharesSumToOneAtEverySolidPoint) {
+  // A triangular prism (STEP, fluid outside) whose edge along z at the origin has the solid
+  // angle alpha, acute to obtuse: face A along +x (normal -y), face B along alpha. Every point
+  // y of the solid near the edge is the image of one fluid point per face it projects onto
+  // from behind (its reflection across that face's plane). Reference: the ghosts of those
+  // sources at y carry shares summing to 1 (the partition of unity, convex_edges.hpp), and
+  // no ghost with a volume lies in the fluid. (The kernel sums on a lattice, whose faces here
+  // cut its cells at any angle, are in docs/geometry.md.)
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("curvsph_convex_prism_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (double alpha : {45.0, 60.0, 120.0, 150.0}) {
+    const double a = alpha * std::numbers::pi / 180, L = 16;
+    BRepBuilderAPI_MakePolygon poly(gp_Pnt(0, 0, -4), gp_Pnt(L, 0, -4),
+                                    gp_Pnt(L * std::cos(a), L * std::sin(a), -4), true);
+    test::write_step(
+        BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(poly.Wire()).Face(), gp_Vec(0, 0, 8)).Shape(),
+        dir / "prism.step");
+    const WallSet<3> cad =
+        parse_walls<3>(YAML::Load("[{shape: cad, file: prism.step, fluid: outside}]"),
+                       (dir / "case.yaml").string(), dir);
+    const Vec3d eb(std::cos(a), std::sin(a), 0);
+    const Vec3d na(0, -1, 0), nb(std::sin(a), -std::cos(a), 0);  // into the fluid
+    GhostOptions<3> opt;
+    opt.map = GhostMapKind::mirror;
+    opt.support = static_cast<Real>(2 * kH);
+    for (int k = 0; k < 60; ++k) {
+      const double r = 1.9 * kH * U(rng), phi = a * U(rng);
+      const Vec3d y(r * std::cos(phi), r * std::sin(phi), 0.3);
+      std::vector<Vec3> sources;
+      if (y.x() > 0) sources.push_back((y - 2 * y.dot(na) * na).cast<Real>());
+      if (y.dot(eb) > 0) sources.push_back((y - 2 * y.dot(nb) * nb).cast<Real>());
+      GhostSet<3> g;
+      g.build(sources, std::vector<Vec3>(sources.size(), Vec3::Zero()), cad, opt);
+      double sum = 0;
+      for (std::size_t q = 0; q < g.size(); ++q) {
+        if ((g.x[q].cast<double>() - y).norm() < 1e-9) sum += g.beta[q];
+        if (g.beta[q] > 0) {
+          EXPECT_LT(cad.closest(g.x[q].cast<double>()).distance, 1e-9)
+              << alpha << ": a ghost with a volume in the fluid at " << g.x[q].transpose();
+        }
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-9) << alpha << " degrees at (" << y.transpose() << ")";
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

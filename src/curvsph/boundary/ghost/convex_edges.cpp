@@ -24,8 +24,15 @@ double planar_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& 
     const WallPoint<D>& z = fp[static_cast<std::size_t>(f)];
     if (z.k1 != 0.0 || z.k2 != 0.0) continue;
     const double dz = (y - z.foot).dot(z.normal);  // < 0: y behind Z's plane
-    if (!(dz < 0 && -dz < support)) continue;
-    if ((y - z.foot - dz * z.normal).norm() > 1e-6 * -dz) continue;  // y projects onto Z
+    if (!(std::abs(dz) < support)) continue;
+    if ((y - z.foot - dz * z.normal).norm() > 1e-6 * std::abs(dz)) continue;  // y projects onto Z
+    // Z recedes behind X's plane (a convex edge between them); a concave edge keeps its plain
+    // images, cut or completed by flat_corners.hpp.
+    if (!((z.foot - feet[0]).dot(n) < 0)) continue;
+    // y in front of Z across a convex edge: in the fluid beyond Z (an acute solid's edge),
+    // no share (x keeps it as a guard).
+    if (dz > 0) return 0.0;
+    if (!(dz < 0)) continue;
     bool dup = false;
     for (int q = 0; q < nfeet; ++q)
       dup |= (feet[static_cast<std::size_t>(q)] - z.foot).norm() <= 1e-7 * -dz;

@@ -10,13 +10,15 @@
 // middle of a CAD box's edge, docs/geometry.md). The image is weighted by X's share of the
 // solid at y,
 //   s_X(y) = f(d) / sum_Z f(D_Z(y)),  f(D) = (1 - D/2h)^2 / D^2 (0 beyond 2h),
-// the sum over the planar faces Z that are y's sources: y lies behind Z's plane, projects
-// onto Z at distance D_Z(y) < 2h, and its reflection across Z lies in the fluid (a re-entrant
-// neighbour's reflection can land in the solid; `in_fluid` asks every wall, so that a face lying on
-// another wall's, a box standing on a floor, takes no share). Each such source projects onto Z and
+// the sum over X and the planar faces Z that are y's sources across a convex edge with X:
+// Z's foot of y lies behind X's plane, y lies behind Z's plane and projects onto Z at
+// distance D_Z(y) < 2h, and its reflection across Z lies in the fluid (`in_fluid` asks every
+// wall: a re-entrant neighbour's reflection can land in the solid, and a face lying on another
+// wall's, a box standing on a floor, takes no share). Each such source projects onto Z and
 // mirrors onto y, so the shares of y over its sources sum to 1: the solid is covered once,
-// pointwise. Where y has no other source (a face's middle, a concave edge of 90 degrees or less)
-// the share is 1 and the image is the plain mirror as before. Curved faces take no part: their
+// pointwise. Where y has no other source (a face's middle, a concave edge) the share is 1 and
+// the image is the plain mirror as before (at concave edges flat_corners.hpp cuts the
+// overlaps at the bisector and adds the corner images). Curved faces take no part: their
 // images keep their volume.
 #include <functional>
 

@@ -10,6 +10,9 @@ namespace curvsph {
 template <int D>
 double planar_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& n, double d,
                     double support, const std::function<bool(const VecD<D>&)>& in_fluid) {
+  // No face recedes behind X's plane near y (a face's middle, a tank's concave edges): the
+  // share is 1 without the faces' query.
+  if (!faces.may_reach_behind(y, support, VecD<D>(y + d * n), n)) return 1.0;
   constexpr int kMaxFaces = 16;
   std::array<WallPoint<D>, kMaxFaces> fp;
   const int nf = faces.face_points_near(y, support, fp.data(), kMaxFaces);

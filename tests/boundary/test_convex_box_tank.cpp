@@ -36,11 +36,12 @@ YAML::Node box_on_floor(const std::string& obstacle) {
 class ConvexBoxTank : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ConvexBoxTank, StaysAtRest) {
-  // Measured: 0.0108 of rho g H deep (box and STL alike), no wall contact; the tank without the
-  // box 0.0102. Before (the closest point alone, the solid near the box's edges covered two
-  // or three times): 0.0260 with 7436 wall contacts by 44 particles (box), 0.0362 with 3588 by
-  // 24 (STL); with the faces' shares but not yet turned with the floor's corner images under
-  // the vertical edges: 0.0140 with 9464 contacts by 56 (box). Bound: the 2 %.
+  // Measured: 0.0108 of rho g H deep (box and STL alike, and a STEP box: 29 s, so not here),
+  // no wall contact; the tank without the box 0.0102. Before (the closest point alone, the solid
+  // near the box's edges covered two or three times): 0.0260 with 7436 wall contacts by 44
+  // particles (box), 0.0362 with 3588 by 24 (STL); with the faces' shares but not yet turned with
+  // the floor's corner images under the vertical edges: 0.0140 with 9464 contacts by 56 (box).
+  // Bound: the 2 %.
   std::string obstacle = "{shape: box, min: [0.7, 0.4, 0], max: [1.3, 0.8, 0.4], fluid: outside}";
   std::filesystem::path dir;
   if (GetParam() == "stl") {

@@ -294,5 +294,28 @@ TEST(ConvexBox, CadPrismSharesSumToOneAtEverySolidPoint) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ConvexBox, CadReentrantEdgeFillsTheSupport) {
+  // Fluid inside an L-shaped CAD prism (a 16 x 16 square less the quarter x, y > 8, 16 high):
+  // its re-entrant edge x = y = 8 is convex seen from the fluid (the solid's angle 90
+  // degrees outside the L). Before: 1.627 times the reference at the edge's middle.
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("curvsph_convex_l_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  BRepBuilderAPI_MakePolygon poly;
+  for (const auto& [px, py] : {std::pair{0, 0}, {16, 0}, {16, 8}, {8, 8}, {8, 16}, {0, 16}})
+    poly.Add(gp_Pnt(px, py, 0));
+  poly.Close();
+  test::write_step(
+      BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(poly.Wire()).Face(), gp_Vec(0, 0, 16)).Shape(),
+      dir / "l.step");
+  const WallSet<3> cad = parse_walls<3>(YAML::Load("[{shape: cad, file: l.step, fluid: inside}]"),
+                                        (dir / "case.yaml").string(), dir);
+  std::filesystem::remove_all(dir);
+  // The solid x > 8, y > 8 around the edge: edge_points' solid quadrant turned by 180 degrees.
+  std::vector<Vec3d> at;
+  for (const Vec3d& p : edge_points(0)) at.push_back(Vec3d(8 - p.x(), 8 - p.y(), 8));
+  EXPECT_LT(worst(lattice_sums(cad, at, kH / 4, 4 * kH, 4 * kH), "CAD re-entrant edge"), 1e-9);
+}
+
 }  // namespace
 }  // namespace curvsph

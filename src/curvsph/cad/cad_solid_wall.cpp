@@ -115,6 +115,19 @@ int CadSolidWall::face_points_near(const Vec3d& x, double reach, WallPoint<3>* o
   return n;
 }
 
+bool CadSolidWall::may_reach_behind(const Vec3d& x, double reach, const Vec3d& foot,
+                                    const Vec3d& n) const {
+  // A face's box reaches behind if a corner does; the face of the plane itself (its box thin
+  // along n, when the plane is axis-aligned) does not by more than its tolerance.
+  for (const auto& b : boxes_) {
+    if (!(b.exteriorDistance(x) < reach)) continue;
+    for (int c = 0; c < 8; ++c)
+      if ((b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - foot).dot(n) < -1e-3 * reach)
+        return true;
+  }
+  return false;
+}
+
 WallPoint<3> CadSolidWall::closest(const Vec3d& x, const ParamSeed&) const {
   // Faces by the distance of their boxes (a lower bound of the distance to the face).
   const std::size_t n = faces_.size();

@@ -42,6 +42,9 @@ class CadSolidWall : public Wall<3>, public MultiFace<3> {
   bool closed_surface() const override { return true; }
   // Every face whose box is within `reach`, answering alone (faceted.hpp), nearest box first.
   int face_points_near(const Vec3d& x, double reach, WallPoint<3>* out, int max) const override;
+  // From the faces' boxes: a box within reach with a corner behind the plane (faceted.hpp).
+  bool may_reach_behind(const Vec3d& x, double reach, const Vec3d& foot,
+                        const Vec3d& n) const override;
 
   // +1: x inside the closed shell, -1: outside, 0: on it (within the shape's tolerance).
   // The classifier of OpenCASCADE; independent of the faces' normals.

@@ -35,6 +35,14 @@ class MultiFace {
   virtual ~MultiFace() = default;
   virtual int face_points_near(const VecD<D>& x, double reach, WallPoint<D>* out,
                                int max) const = 0;
+  // Whether a face within `reach` of x may reach behind the plane through `foot` with normal
+  // `n` (into the fluid) by more than 1e-3 reach: a cheap conservative test (bounding boxes)
+  // that lets the convex edges' shares (boundary/ghost/convex_edges.hpp) skip the faces'
+  // query where no face recedes behind a planar face; true when unknown.
+  virtual bool may_reach_behind(const VecD<D>& /*x*/, double /*reach*/, const VecD<D>& /*foot*/,
+                                const VecD<D>& /*n*/) const {
+    return true;
+  }
 };
 
 }  // namespace curvsph

@@ -44,18 +44,6 @@ bool shared_vertex(const WallFacet<2>& A, const WallFacet<2>& B, double tol, Cor
   return false;
 }
 
-// The convex corners' partition of unity (facet_images.hpp): the raw share of an image at
-// distance D from the member's face segment (or from the vertex), q^2 / D^2 with
-// q = 1 - D / support, none beyond the support. 1/D^2 makes the shares depend on the angle
-// alone close to the vertex and gives the face an image sits on all of it; q^2 takes a
-// member's share to 0 where its source leaves the support of the wall.
-double convex_share(double D, double support) {
-  if (!(D < support)) return 0;
-  const double q = 1 - D / support;
-  const double Dm = std::max(D, 1e-12 * support);
-  return q * q / (Dm * Dm);
-}
-
 // The vertex member's factor. Where the solid is acute (alpha < 90 degrees) the particles
 // beyond both faces have no share of a face's image (their reflections land in the fluid), and
 // the point image gives them one: it takes most of the solid near the vertex there, the faces'
@@ -85,6 +73,18 @@ bool same_line(const WallFacet<2>& A, const WallFacet<2>& B, double tol) {
 }
 
 }  // namespace
+
+// The convex corners' partition of unity (facet_images.hpp): the raw share of an image at
+// distance D from the member's face segment (or from the vertex), q^2 / D^2 with
+// q = 1 - D / support, none beyond the support. 1/D^2 makes the shares depend on the angle
+// alone close to the vertex and gives the face an image sits on all of it; q^2 takes a
+// member's share to 0 where its source leaves the support of the wall.
+double convex_share(double D, double support) {
+  if (!(D < support)) return 0;
+  const double q = 1 - D / support;
+  const double Dm = std::max(D, 1e-12 * support);
+  return q * q / (Dm * Dm);
+}
 
 template <>
 int facet_images<2>(const Vec2d& x, const WallFacet<2>* faces, int nfaces, double support,

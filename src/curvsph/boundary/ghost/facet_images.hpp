@@ -71,4 +71,8 @@ template <int D>
 int facet_images(const VecD<D>& x, const WallFacet<D>* faces, int nfaces, double support,
                  FacetImage<D>* out, int max);
 
+// The raw share f(D) = (1 - D/support)^2 / D^2 of a convex corner's or edge's partition of unity
+// (above; 0 beyond the support), also the 3-D convex edges' (convex_box.hpp).
+double convex_share(double D, double support);
+
 }  // namespace curvsph

@@ -5,9 +5,12 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <utility>
 
+#include "curvsph/boundary/ghost/convex_box.hpp"
+#include "curvsph/boundary/ghost/convex_edges.hpp"
 #include "curvsph/boundary/ghost/facet_images.hpp"
 #include "curvsph/boundary/ghost/flat_corners.hpp"
 #include "curvsph/boundary/ghost/plane_edges.hpp"
@@ -45,6 +48,14 @@ struct Generator {
   const std::vector<const Faceted<D>*>& faceted_walls;
   const std::vector<const MultiFace<D>*>& multi_walls;
   const GhostOptions<D>& opt;
+
+  // Whether r is a fluid point: outside every wall (the sources of the convex edges' shares,
+  // convex_box.hpp, convex_edges.hpp).
+  const std::function<bool(const VecD<D>&)> in_fluid = [this](const VecD<D>& r) {
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (!(walls[w].closest(r).distance > 0)) return false;
+    return true;
+  };
 
   using Record = typename GhostSet<D>::Record;
   using Corner = typename GhostSet<D>::Corner;
@@ -117,13 +128,29 @@ struct Generator {
 
   static constexpr int kMaxFlat = 12;
 
+  // Single images that hold a share of a convex edge's solid (0 < share < 1: convex_box.hpp,
+  // convex_edges.hpp, facet_images.hpp), for their corners with other walls' flat faces.
+  struct SharedImage {
+    std::int32_t wall;
+    VecD<D> x, u, u_slip, normal;
+    double weight;
+  };
+  struct Shared {
+    std::array<SharedImage, kMaxFlat> image;
+    int n = 0;
+    void add(const SharedImage& s) {
+      if (n < kMaxFlat) image[static_cast<std::size_t>(n++)] = s;
+    }
+  };
+
   // A faceted wall (a polygon): the images of facet_images.hpp, flat faces (kappa = 0, so
   // every map is the mirror, beta = 1 but at convex corners, where beta is the image's share
   // of the solid, 0 for a guard). Its single images join `flat` (group k) for the
   // corners with other walls' flat faces (flat_corners.hpp). False for walls that are not
   // faceted.
   bool faceted(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
-               const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat) const {
+               const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
+               Shared& shared) const {
     constexpr int kMaxFaces = 16, kMaxImages = 32;
     std::array<WallFacet<D>, kMaxFaces> faces;
     if (!faceted_walls[k]) return false;
@@ -131,8 +158,28 @@ struct Generator {
     if (nf < 0) return false;
     std::array<FacetImage<D>, kMaxImages> images;
     const int ni = facet_images<D>(x, faces.data(), nf, opt.support, images.data(), kMaxImages);
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat, shared);
+    return true;
+  }
+
+  // A box with the fluid outside: the images of convex_box.hpp (the faces' shares of the solid
+  // near its edges and corners, guards), emitted as a faceted wall's.
+  void outside_box(std::vector<Record>& out, Index i, std::int32_t k, const BoxWall<D>& box,
+                   const VecD<D>& x, const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat,
+                   int& nflat, Shared& shared) const {
+    std::array<FacetImage<D>, 2 * D + 1> images;
+    const int ni = box_outside_images<D>(x, box.min(), box.max(), opt.support, in_fluid,
+                                         images.data(), static_cast<int>(images.size()));
+    emit_images(out, i, k, u, images.data(), ni, flat, nflat, shared);
+  }
+
+  // Emits the images of x of wall k (facet_images.hpp); the whole single reflections join
+  // `flat` (group k) for the corners with other walls' flat faces (flat_corners.hpp).
+  void emit_images(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& u,
+                   const FacetImage<D>* images, int ni, std::array<FlatFace<D>, kMaxFlat>& flat,
+                   int& nflat, Shared& shared) const {
     for (int g = 0; g < ni; ++g) {
-      const FacetImage<D>& im = images[static_cast<std::size_t>(g)];
+      const FacetImage<D>& im = images[g];
       const VecD<D> uw = walls[k].motion.velocity_at(im.foot);
       const VecD<D> slip = uw + im.M * (u - uw);
       const VecD<D> ug = opt.velocity == GhostVelocity::free_slip
@@ -146,10 +193,11 @@ struct Generator {
       if (single && im.weight == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {im.foot, im.normal, k, k,
                                                    static_cast<Index>(out.size())};
+      if (single && im.weight > 0 && im.weight < 1)
+        shared.add({k, im.x, ug, slip, im.normal, im.weight});
       emit(out, i, k, im.x, ug, slip, im.weight, im.depth, im.source_depth, im.foot, im.normal,
            im.reflections);
     }
-    return true;
   }
 
   // A wall of several faces (a CAD solid, faceted.hpp): one ghost per face onto which x
@@ -159,8 +207,8 @@ struct Generator {
   // bore meeting its end cap: the double image of that edge). False when x projects onto no
   // face (the region of a convex edge or vertex): the closest point answers there.
   bool multiface(std::vector<Record>& out, Index i, std::int32_t k, const VecD<D>& x,
-                 const VecD<D>& u, std::array<FlatFace<D>, kMaxFlat>& flat, int& nflat,
-                 bool& no_root) const {
+                 const VecD<D>& u, const WallPoint<D>& c, std::array<FlatFace<D>, kMaxFlat>& flat,
+                 int& nflat, Shared& shared, bool& no_root) const {
     if (!multi_walls[k]) return false;
     constexpr int kMaxFaces = 16;
     std::array<WallPoint<D>, kMaxFaces> fp;
@@ -177,7 +225,22 @@ struct Generator {
       if (dup) continue;
       used[static_cast<std::size_t>(nused++)] = f;
     }
-    if (nused == 0) return false;
+    if (nused == 0) {
+      // Beyond every face near x (a sharp edge's or vertex's region): where those faces are
+      // all planar, their shares cover the solid (convex_edges.hpp) and the closest-point image
+      // stays as a guard of no volume (the contact layer's, as facet_images.hpp's); else the
+      // closest point answers alone.
+      bool planar = nf > 0 && c.k1 == 0.0 && c.k2 == 0.0;
+      for (int f = 0; f < nf; ++f)
+        planar &=
+            fp[static_cast<std::size_t>(f)].k1 == 0.0 && fp[static_cast<std::size_t>(f)].k2 == 0.0;
+      if (!planar) return false;
+      const VecD<D> uw = walls[k].motion.velocity_at(c.foot);
+      const auto [ug, ug_slip] = images(u, uw, c.normal, 1.0);
+      emit(out, i, k, c.foot - c.distance * c.normal, ug, ug_slip, 0.0, c.distance, c.distance,
+           c.foot, c.normal, 1);
+      return true;
+    }
     std::array<int, kMaxFaces> curved{};
     int ncurved = 0;
     const int flat0 = nflat;
@@ -190,11 +253,20 @@ struct Generator {
       }
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
-      if (p.k1 == 0.0 && p.k2 == 0.0 && nflat < kMaxFlat)
+      const bool planar = p.k1 == 0.0 && p.k2 == 0.0;
+      // A planar face's share of the solid at its image (convex_edges.hpp): below 1 near an
+      // edge where another face has the same image; such a share stays out of the corners.
+      const double share =
+          planar ? planar_share<D>(*multi_walls[k], VecD<D>(p.foot - g.depth * p.normal), p.normal,
+                                   p.distance, opt.support, in_fluid)
+                 : 1.0;
+      if (planar && share > 0 && share < 1)
+        shared.add({k, p.foot - g.depth * p.normal, ug, ug_slip, p.normal, share});
+      if (planar && share == 1.0 && nflat < kMaxFlat)
         flat[static_cast<std::size_t>(nflat++)] = {p.foot, p.normal, k, -1,
                                                    static_cast<Index>(out.size())};
-      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, g.beta, g.depth, p.distance, p.foot,
-           p.normal, 1);
+      emit(out, i, k, p.foot - g.depth * p.normal, ug, ug_slip, share * g.beta, g.depth, p.distance,
+           p.foot, p.normal, 1);
       if (p.k1 != 0.0 || p.k2 != 0.0) curved[static_cast<std::size_t>(ncurved++)] = used[q];
     }
     // Curved ghost x' reflected across a perpendicular planar face A: the image of x' behind
@@ -250,6 +322,32 @@ struct Generator {
     }
   }
 
+  // A share of a convex edge's solid reflected across the flat faces of other walls
+  // perpendicular to its face (a box standing on a floor: below the floor, under the box's
+  // vertical edges), with the share: where flat_corners.hpp rotates the whole images of a
+  // concave edge, the shares of the convex edge above it turn with them (the sum at the foot
+  // of a box's vertical edge was 0.900). Velocities composed (emit_corner's rule).
+  void shared_edges(std::vector<Record>& out, std::vector<Corner>& corners, Index i,
+                    const SharedImage& s, const std::array<FlatFace<D>, kMaxFlat>& flat,
+                    int nflat) const {
+    for (int a = 0; a < nflat; ++a) {
+      const FlatFace<D>& A = flat[static_cast<std::size_t>(a)];
+      if (A.wall == s.wall || std::abs(A.normal.dot(s.normal)) > 1e-6) continue;
+      const double da = (s.x - A.foot).dot(A.normal);
+      if (!(da > 0 && da < opt.support)) continue;
+      const VecD<D> fa = s.x - da * A.normal;
+      const VecD<D> uwa = walls[A.wall].velocity(fa);
+      const VecD<D> u2 = images(s.u, uwa, A.normal, 1.0).first;
+      const VecD<D> u2_slip =
+          ghost_velocity<D>(GhostVelocity::free_slip, s.u_slip, uwa, A.normal, 1.0);
+      corners.push_back({static_cast<Index>(out.size()),
+                         {s.wall, A.wall, -1},
+                         {s.normal, A.normal, VecD<D>::Zero()},
+                         2});
+      emit(out, i, A.wall, fa - da * A.normal, u2, u2_slip, s.weight, da, da, fa, A.normal, 2);
+    }
+  }
+
   // Returns {penetrated, no_root}.
   std::pair<bool, bool> particle(Index i, const Vec<D>& xi, const Vec<D>& vi,
                                  std::vector<Record>& out, std::vector<Corner>& corners) const {
@@ -257,6 +355,7 @@ struct Generator {
     int nflat = 0;
     std::array<CurvedImage, kMaxFlat> curved;  // single images across curved walls
     int ncurved = 0;
+    Shared shared;
     bool penetrated = false, no_root = false;
     const VecD<D> x = xi.template cast<double>();
     const VecD<D> u = vi.template cast<double>();
@@ -264,6 +363,17 @@ struct Generator {
     const std::int32_t nwalls = static_cast<std::int32_t>(walls.size());
 
     for (std::int32_t k = 0; k < nwalls; ++k) {
+      if (const BoxWall<D>* box = boxes[k]; box && box->side() == FluidSide::outside) {
+        const VecD<D> lo = box->min() - VecD<D>::Constant(support);
+        const VecD<D> hi = box->max() + VecD<D>::Constant(support);
+        if ((x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+        if (!(box->closest(x).distance > 0)) {
+          penetrated = true;
+          continue;
+        }
+        outside_box(out, i, k, *box, x, u, flat, nflat, shared);
+        continue;
+      }
       if (const BoxWall<D>* box = boxes[k]) {
         // Fluid inside a box: face by face.
         const VecD<D>& lo = box->min();
@@ -299,8 +409,8 @@ struct Generator {
         continue;
       }
       if (!(p.distance < support)) continue;
-      if (faceted(out, i, k, x, u, flat, nflat)) continue;
-      if (multiface(out, i, k, x, u, flat, nflat, no_root)) continue;
+      if (faceted(out, i, k, x, u, flat, nflat, shared)) continue;
+      if (multiface(out, i, k, x, u, p, flat, nflat, shared, no_root)) continue;
       const GhostDepth g = ghost_map(opt.map, p.distance, p.k1, p.k2);
       if (!g.ok) {
         no_root = true;
@@ -333,6 +443,7 @@ struct Generator {
       for (const ReflectionWord& w : words) emit_corner(out, corners, i, x, u, flat.data(), w);
     }
     for (int c = 0; c < ncurved; ++c) plane_edges(out, corners, i, x, curved[c], flat, nflat);
+    for (int c = 0; c < shared.n; ++c) shared_edges(out, corners, i, shared.image[c], flat, nflat);
     return {penetrated, no_root};
   }
 };
@@ -349,7 +460,7 @@ void GhostSet<D>::build(const std::vector<Vec<D>>& x_f, const std::vector<Vec<D>
     multi_[k] = dynamic_cast<const MultiFace<D>*>(&walls[k]);
     faceted_[k] = dynamic_cast<const Faceted<D>*>(&walls[k]);
     const auto* box = dynamic_cast<const BoxWall<D>*>(&walls[k]);
-    boxes_[k] = box && box->side() == FluidSide::inside ? box : nullptr;
+    boxes_[k] = box;
   }
   const int max_threads = omp_get_max_threads();
   if (static_cast<int>(thread_ghosts_.size()) < max_threads) {

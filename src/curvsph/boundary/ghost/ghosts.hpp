@@ -136,7 +136,7 @@ class GhostSet {
   std::vector<std::vector<Corner>> thread_corners_;  // ghost index local to the thread's buffer
   std::vector<std::vector<Index>> thread_penetrated_, thread_no_root_;
   std::vector<std::size_t> offsets_;
-  std::vector<const BoxWall<D>*> boxes_;    // per wall: the box when fluid is inside, else null
+  std::vector<const BoxWall<D>*> boxes_;    // per wall: the box (either side), else null
   std::vector<const Faceted<D>*> faceted_;  // per wall: a faceted wall (a polygon), else null
   std::vector<const MultiFace<D>*> multi_;  // per wall: a wall of several faces, else null
 };

@@ -182,8 +182,54 @@ void Solver<D>::resort() {
   }
 }
 
+// The continuity rate D(x^{n+1/2}, v^{n+1/2}) into P.drho: the particles, the cell list and
+// the walls (with their images) are put back half a step, x^{n+1/2} = x^{n+1} - dt/2 v^{n+1/2}
+// (exact: the drift moved them by dt v^{n+1/2}), and restored after. This is the midpoint
+// rule, second order, the rates at the half-step state as in the symplectic scheme of
+// DualSPHysics (Crespo et al. 2015, Comput. Phys. Commun. 187: 204-216). Taken at the end
+// positions x^{n+1} with the half-step velocity, the rate was first order in the geometry,
+// and in a curved flow the lag is a spurious radial velocity: v^{n+1/2} lies along the chord,
+// tilted outwards from the tangent at x^{n+1} by Omega dt / 2, so u_r = v^2 dt / (2 r). The
+// continuity equation read its divergence, (dt / r) d(v^2/2)/dr, as a density rate in the
+// fluid, and where a wall's images reflect u_r, a jump of 2 u_r across the wall: in Barker's
+// Couette at dx = 1.5 mm and dt = 2.4e-3 s, -0.78 % of rho0 per second in the ring next to
+// the turning cylinder (tests/boundary/test_couette_continuity.cpp). The continuity density
+// fell there, its low pressure drew the rings inwards, and the flow from rest left the
+// analytic profile by 0.0075 omega R_i every 10 s (docs/validation/couette/findings.md, "The
+// continuity density in Couette from rest"). Positions only: densities and velocities are the
+// step's.
+template <int D>
+void Solver<D>::continuity_at_midpoint(Real dt) {
+  const Real half = dt / 2;
+  x_end_.assign(P_.x.begin(), P_.x.end());
+  parallel_for(static_cast<Index>(P_.size()), [&](Index i) {
+    P_.x[i] -= half * P_.v[i];
+    cells_.wrap(P_.x[i]);
+  });
+  walls_.set_time(rates_time_ - static_cast<double>(half));
+  build_neighbors();
+  if (boundary_) boundary_->prepare(P_, t_);
+  const PairRule<D> rule = decomp_.pair_rule(cells_);
+  DensityDiffusion<D> diffusion{F_.delta_sph * W_.h * F_.eos.c0, nullptr,
+                                F_.hydrostatic_density_gradient()};
+  if (F_.delta_sph > 0 && F_.diffusion == FluidParams<D>::Diffusion::antuono) {
+    renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, rule);
+    decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
+    diffusion.grad_rho = grad_rho_.data();
+  }
+  continuity_rate(P_, cells_, W_, diffusion, pair_, rule);
+  if (boundary_) boundary_->add_density_rate(P_);
+  P_.x.swap(x_end_);
+  walls_.set_time(rates_time_);
+  build_neighbors();
+}
+
 template <int D>
 void Solver<D>::compute_rates(Real dt_rho) {
+  if (continuity_ && dt_rho > 0) {
+    Stopwatch sw{times_.density};
+    continuity_at_midpoint(dt_rho);
+  }
   if (boundary_) prepare_boundary();
   // [mpi] The fluid pair passes follow the decomposition's pair rule: owned particles only
   // (owner rule), or the pairs whose midpoint this rank owns, halo sums sent to their owners
@@ -196,18 +242,9 @@ void Solver<D>::compute_rates(Real dt_rho) {
       // rho^{n+1} = rho^n + dt D(x^{n+1}, v^{n+1/2}): the density is advanced like a position,
       // with the half-step velocity, so the scheme stays symplectic for acoustic modes (a
       // density rate lagging half a step amplifies sound waves every step).
-      if (dt_rho > 0) {
-        DensityDiffusion<D> diffusion{F_.delta_sph * W_.h * F_.eos.c0, nullptr,
-                                      F_.hydrostatic_density_gradient()};
-        if (F_.delta_sph > 0 && F_.diffusion == FluidParams<D>::Diffusion::antuono) {
-          renormalised_density_gradient(P_, cells_, W_, grad_rho_, pair_, rule);
-          decomp_.update_halo(grad_rho_);  // [mpi] continuity_rate reads grad_rho_[j]
-          diffusion.grad_rho = grad_rho_.data();
-        }
-        continuity_rate(P_, cells_, W_, diffusion, pair_, rule);
-        if (boundary_) boundary_->add_density_rate(P_);
+      // P.drho from continuity_at_midpoint() above.
+      if (dt_rho > 0)
         parallel_for(decomp_.owned(), [&](Index i) { P_.rho[i] += dt_rho * P_.drho[i]; });
-      }
     } else {
       density_summation(P_, cells_, W_, rule);
       if (boundary_) boundary_->add_density(P_);

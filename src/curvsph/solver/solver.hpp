@@ -152,6 +152,8 @@ class Solver {
   // Boundary pre-pass, density (summation; or continuity advanced by dt_rho), pressure and
   // accelerations at the current positions.
   void compute_rates(Real dt_rho);
+  // The continuity equation's rate at the step's midpoint positions into P.drho (solver.cpp).
+  void continuity_at_midpoint(Real dt);
   // Boundary pre-pass; particles past a wall are put back (or the run stops, with
   // boundary.penetration: stop) and the pre-pass is redone on the corrected positions.
   void prepare_boundary();
@@ -174,7 +176,8 @@ class Solver {
   Decomposition<D> decomp_;
   bool continuity_ = false;
   std::vector<Vec<D>> grad_rho_;
-  PairFactors<D> pair_;  // per-particle factors of the pair sums, reused every step
+  std::vector<Vec<D>> x_end_;  // continuity_at_midpoint(): the end positions, kept
+  PairFactors<D> pair_;        // per-particle factors of the pair sums, reused every step
   SurfaceTensionScratch<D> surface_scratch_;
   ShiftScratch<D> shift_;
   TransportVelocity<D> tv_;     // transport_velocity (off unless the case sets it)

@@ -10,7 +10,7 @@
 // the other face, and each single image at full volume covers the solid there two or three times
 // (kernel sums up to 1.64 at the middle of a CAD box's edge, docs/geometry.md). The image is
 // weighted by X's share of the solid at y,
-//   s_X(y) = f(d) / sum_Z f(D_Z(y)),  f(D) = (1 - D/2h)^2 / D^2 (0 beyond 2h),
+//   s_X(y) = f(D_X) / sum_Z f(D_Z(y)),  f(D) = (1 - D/2h)^2 / D^2 (0 beyond 2h),
 // the sum over X and the faces Z, planar or curved, that are y's sources across a convex edge
 // with X: Z's foot of y lies behind X's tangent plane, y lies behind Z and projects onto Z at
 // distance D_Z(y) < 2h, and its reflection across Z's tangent plane lies in the fluid (the

@@ -8,8 +8,8 @@
 namespace curvsph {
 
 template <int D>
-double planar_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& n, double d,
-                    double support, const std::function<bool(const VecD<D>&)>& in_fluid) {
+double edge_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& n, double d,
+                  double support, const std::function<bool(const VecD<D>&)>& in_fluid) {
   // No face recedes behind X's plane near y (a face's middle, a tank's concave edges): the
   // share is 1 without the faces' query.
   if (!faces.may_reach_behind(y, support, VecD<D>(y + d * n), n)) return 1.0;
@@ -25,8 +25,7 @@ double planar_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& 
   int nfeet = 1;
   for (int f = 0; f < nf; ++f) {
     const WallPoint<D>& z = fp[static_cast<std::size_t>(f)];
-    if (z.k1 != 0.0 || z.k2 != 0.0) continue;
-    const double dz = (y - z.foot).dot(z.normal);  // < 0: y behind Z's plane
+    const double dz = (y - z.foot).dot(z.normal);  // < 0: y behind Z (its tangent plane)
     if (!(std::abs(dz) < support)) continue;
     if ((y - z.foot - dz * z.normal).norm() > 1e-6 * std::abs(dz)) continue;  // y projects onto Z
     // Z recedes behind X's plane (a convex edge between them); a concave edge keeps its plain
@@ -44,12 +43,14 @@ double planar_share(const MultiFace<D>& faces, const VecD<D>& y, const VecD<D>& 
     if (!in_fluid(VecD<D>(y - 2.0 * dz * z.normal))) continue;
     total += convex_share(-dz, support);
   }
-  return own / total;
+  // A curved face's image deeper than the support (density_preserving beyond a convex face):
+  // no face's f reaches it, and its own face's images alone cover it.
+  return total > 0 ? own / total : 1.0;
 }
 
-template double planar_share<2>(const MultiFace<2>&, const Vec2d&, const Vec2d&, double, double,
-                                const std::function<bool(const Vec2d&)>&);
-template double planar_share<3>(const MultiFace<3>&, const Vec3d&, const Vec3d&, double, double,
-                                const std::function<bool(const Vec3d&)>&);
+template double edge_share<2>(const MultiFace<2>&, const Vec2d&, const Vec2d&, double, double,
+                              const std::function<bool(const Vec2d&)>&);
+template double edge_share<3>(const MultiFace<3>&, const Vec3d&, const Vec3d&, double, double,
+                              const std::function<bool(const Vec3d&)>&);
 
 }  // namespace curvsph

@@ -226,15 +226,10 @@ struct Generator {
       used[static_cast<std::size_t>(nused++)] = f;
     }
     if (nused == 0) {
-      // Beyond every face near x (a sharp edge's or vertex's region): where those faces are
-      // all planar, their shares cover the solid (convex_edges.hpp) and the closest-point image
-      // stays as a guard of no volume (the contact layer's, as facet_images.hpp's); else the
-      // closest point answers alone.
-      bool planar = nf > 0 && c.k1 == 0.0 && c.k2 == 0.0;
-      for (int f = 0; f < nf; ++f)
-        planar &=
-            fp[static_cast<std::size_t>(f)].k1 == 0.0 && fp[static_cast<std::size_t>(f)].k2 == 0.0;
-      if (!planar) return false;
+      // Beyond every face near x (a convex edge's or vertex's region): the faces' shares,
+      // planar and curved, cover the solid (convex_edges.hpp) and the closest-point image
+      // stays as a guard of no volume (the contact layer's, as facet_images.hpp's).
+      if (nf == 0) return false;
       const VecD<D> uw = walls[k].motion.velocity_at(c.foot);
       const auto [ug, ug_slip] = images(u, uw, c.normal, 1.0);
       emit(out, i, k, c.foot - c.distance * c.normal, ug, ug_slip, 0.0, c.distance, c.distance,
@@ -254,12 +249,11 @@ struct Generator {
       const VecD<D> uw = walls[k].motion.velocity_at(p.foot);
       const auto [ug, ug_slip] = images(u, uw, p.normal, g.depth / p.distance);
       const bool planar = p.k1 == 0.0 && p.k2 == 0.0;
-      // A planar face's share of the solid at its image (convex_edges.hpp): below 1 near an
-      // edge where another face has the same image; such a share stays out of the corners.
-      const double share =
-          planar ? planar_share<D>(*multi_walls[k], VecD<D>(p.foot - g.depth * p.normal), p.normal,
-                                   p.distance, opt.support, in_fluid)
-                 : 1.0;
+      // A face's share of the solid at its image (convex_edges.hpp): below 1 near a convex
+      // edge where another face has the same image; a planar face's share stays out of the
+      // corners, a curved face's multiplies the map's volume factor.
+      const double share = edge_share<D>(*multi_walls[k], VecD<D>(p.foot - g.depth * p.normal),
+                                         p.normal, g.depth, opt.support, in_fluid);
       if (planar && share > 0 && share < 1)
         shared.add({k, p.foot - g.depth * p.normal, ug, ug_slip, p.normal, share});
       if (planar && share == 1.0 && nflat < kMaxFlat)

@@ -22,6 +22,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/ghost_fill.hpp"
 #include "../support/step_file.hpp"
 #include "curvsph/boundary/ghost/ghosts.hpp"
 #include "curvsph/geometry/cylinder.hpp"
@@ -63,23 +64,7 @@ Cells cells(int nr, double z0, double z1, int nz) {
 // sum V W over the cells and their ghosts (volume weight beta) at each point of `at`.
 std::vector<double> fill(const WallSet<3>& walls, GhostMapKind map, const Cells& c,
                          const std::vector<Vec<3>>& at) {
-  const WendlandC2<3> W(static_cast<Real>(kH));
-  GhostOptions<3> opt;
-  opt.map = map;
-  opt.support = W.support;
-  GhostSet<3> g;
-  g.build(c.x, std::vector<Vec<3>>(c.x.size(), Vec<3>::Zero()), walls, opt);
-  EXPECT_TRUE(g.penetrated.empty());
-  EXPECT_TRUE(g.no_root.empty());
-  std::vector<double> s(at.size(), 0.0);
-  for (std::size_t a = 0; a < at.size(); ++a) {
-    for (std::size_t j = 0; j < c.x.size(); ++j)
-      s[a] += c.vol[j] * W.value((c.x[j] - at[a]).norm());
-    for (std::size_t q = 0; q < g.size(); ++q)
-      s[a] += g.beta[q] * c.vol[static_cast<std::size_t>(g.source[q])] *
-              W.value((g.x[q] - at[a]).norm());
-  }
-  return s;
+  return curvsph::test::ghost_fill(&walls, map, c, at, kH);
 }
 
 using curvsph::test::write_step;
